@@ -1,0 +1,117 @@
+# The HLSL toolchain. Every kernel under shaders/ declares its entry points in
+# a comment line of its own:
+#
+#   // lumina-kernel: cs main
+#   // lumina-kernel: vs vsMain
+#   // lumina-kernel: ps psMain
+#
+# and is compiled at build time to SPIR-V (DXC when found, else glslangValidator
+# with --hlsl-iomap and the register shifts of docs/binding.md), then checked with
+# spirv-val; to DXIL as well where DXC is found. A kernel that fails fails the build.
+#
+# Kernel names are the source path under shaders/ without ".hlsl", plus ".<entry>"
+# when the entry point is not "main": shaders/rhi_tests/fill.hlsl -> "rhi_tests/fill",
+# its vsMain entry -> "rhi_tests/fill.vsMain". Outputs land in ${LUMINA_SHADER_OUTPUT_DIR}
+# as <name>.spv and <name>.dxil, where the runtime loads them by name.
+
+set(LUMINA_SHADER_OUTPUT_DIR ${CMAKE_BINARY_DIR}/shaders CACHE INTERNAL "compiled kernels")
+
+find_program(LUMINA_DXC NAMES dxc dxc.exe
+  HINTS "$ENV{VULKAN_SDK}/bin" "$ENV{VULKAN_SDK}/Bin" "$ENV{DXC_DIR}")
+find_program(LUMINA_GLSLANG NAMES glslangValidator glslang)
+find_program(LUMINA_SPIRV_VAL NAMES spirv-val HINTS "$ENV{VULKAN_SDK}/bin")
+
+if(NOT LUMINA_DXC AND NOT LUMINA_GLSLANG)
+  message(FATAL_ERROR "No HLSL compiler: install glslang-tools (Debian) or DXC")
+endif()
+if(NOT LUMINA_SPIRV_VAL)
+  message(FATAL_ERROR "spirv-val not found: install spirv-tools")
+endif()
+message(STATUS "Lumina kernels: SPIR-V with ${LUMINA_DXC}${LUMINA_GLSLANG}, DXIL ${LUMINA_DXC}")
+
+# Register shifts shared by both SPIR-V compilers (docs/binding.md): b -> n, t -> 100+n,
+# u -> 200+n, s -> 300+n, in every register space (space N becomes descriptor set N).
+set(LUMINA_SHIFT_T 100)
+set(LUMINA_SHIFT_U 200)
+set(LUMINA_SHIFT_S 300)
+set(LUMINA_MAX_SPACES 4)
+
+function(_lumina_stage_profile stage out_glslang out_dxc)
+  if(stage STREQUAL "cs")
+    set(${out_glslang} comp PARENT_SCOPE)
+  elseif(stage STREQUAL "vs")
+    set(${out_glslang} vert PARENT_SCOPE)
+  elseif(stage STREQUAL "ps")
+    set(${out_glslang} frag PARENT_SCOPE)
+  else()
+    message(FATAL_ERROR "unknown kernel stage '${stage}' (cs, vs or ps)")
+  endif()
+  set(${out_dxc} ${stage}_6_0 PARENT_SCOPE)
+endfunction()
+
+# lumina_add_kernels(TARGET <custom target> ROOT <shaders dir>)
+function(lumina_add_kernels)
+  cmake_parse_arguments(ARG "" "TARGET;ROOT" "" ${ARGN})
+  file(GLOB_RECURSE sources CONFIGURE_DEPENDS "${ARG_ROOT}/*.hlsl")
+  set(outputs "")
+  foreach(src IN LISTS sources)
+    file(RELATIVE_PATH rel "${ARG_ROOT}" "${src}")
+    string(REGEX REPLACE "\\.hlsl$" "" stem "${rel}")
+    set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS "${src}")
+    file(STRINGS "${src}" decls REGEX "^// lumina-kernel: ")
+    foreach(decl IN LISTS decls)
+      string(REGEX MATCH "^// lumina-kernel: ([a-z][a-z]) ([A-Za-z_][A-Za-z0-9_]*)" _ "${decl}")
+      set(stage "${CMAKE_MATCH_1}")
+      set(entry "${CMAKE_MATCH_2}")
+      if(NOT stage OR NOT entry)
+        message(FATAL_ERROR "${src}: malformed kernel declaration '${decl}'")
+      endif()
+      set(name "${stem}")
+      if(NOT entry STREQUAL "main")
+        set(name "${stem}.${entry}")
+      endif()
+      _lumina_stage_profile(${stage} glslang_stage dxc_profile)
+      set(spv "${LUMINA_SHADER_OUTPUT_DIR}/${name}.spv")
+      set(dep "${LUMINA_SHADER_OUTPUT_DIR}/${name}.spv.d")
+      get_filename_component(outdir "${spv}" DIRECTORY)
+      if(LUMINA_DXC)
+        set(compile_spv ${LUMINA_DXC} -spirv -fspv-target-env=vulkan1.1 -T ${dxc_profile} -E ${entry}
+          -HV 2021 -O3 -I ${ARG_ROOT} -DLUMINA_SPIRV=1
+          -fvk-b-shift 0 all -fvk-t-shift ${LUMINA_SHIFT_T} all
+          -fvk-u-shift ${LUMINA_SHIFT_U} all -fvk-s-shift ${LUMINA_SHIFT_S} all
+          -Fo ${spv} ${src})
+        set(depfile_args "")  # DXC writes no Make-style depfile
+      else()
+        set(compile_spv ${LUMINA_GLSLANG} -D -V --target-env vulkan1.1 --hlsl-iomap -S ${glslang_stage}
+          -e ${entry} -I${ARG_ROOT} -DLUMINA_SPIRV=1
+          --shift-cbuffer-binding 0 --shift-texture-binding ${LUMINA_SHIFT_T}
+          --shift-UAV-binding ${LUMINA_SHIFT_U} --shift-sampler-binding ${LUMINA_SHIFT_S}
+          --depfile ${dep} -o ${spv} ${src})
+        set(depfile_args DEPFILE ${dep})
+      endif()
+      add_custom_command(
+        OUTPUT ${spv}
+        COMMAND ${CMAKE_COMMAND} -E make_directory ${outdir}
+        COMMAND ${compile_spv}
+        COMMAND ${LUMINA_SPIRV_VAL} --target-env vulkan1.1 ${spv}
+        DEPENDS ${src}
+        ${depfile_args}
+        COMMENT "HLSL ${name} -> SPIR-V"
+        VERBATIM)
+      list(APPEND outputs ${spv})
+      if(LUMINA_DXC)
+        set(dxil "${LUMINA_SHADER_OUTPUT_DIR}/${name}.dxil")
+        add_custom_command(
+          OUTPUT ${dxil}
+          COMMAND ${CMAKE_COMMAND} -E make_directory ${outdir}
+          COMMAND ${LUMINA_DXC} -T ${dxc_profile} -E ${entry} -HV 2021 -O3 -I ${ARG_ROOT}
+            -Fo ${dxil} ${src}
+          DEPENDS ${src} ${spv}
+          COMMENT "HLSL ${name} -> DXIL"
+          VERBATIM)
+        list(APPEND outputs ${dxil})
+      endif()
+    endforeach()
+  endforeach()
+  add_custom_target(${ARG_TARGET} ALL DEPENDS ${outputs})
+endfunction()
