@@ -1,0 +1,71 @@
+#ifndef LUMINA_SHARED_TYPES_H
+#define LUMINA_SHARED_TYPES_H
+// The tiny macro layer that lets one header declare GPU structs (and small pure functions)
+// for both C++ and HLSL. In C++ the HLSL vector types are glm types inside namespace
+// lumina::gpu; in HLSL everything below is native and the macros vanish.
+//
+//   LUMINA_GPU_NAMESPACE_BEGIN / _END  wrap shared declarations (namespace lumina::gpu in C++)
+//   LUMINA_INLINE                       `inline` in C++, nothing in HLSL
+//   LUMINA_OUT(T) / LUMINA_INOUT(T)     `T&` in C++, `out T` / `inout T` in HLSL
+//   LUMINA_PRECISE                      HLSL `precise` (no FMA contraction); nothing in C++, where
+//                                       ISO mode (-std=c++20) already keeps a*b-c*d uncontracted
+//   LUMINA_STATIC_ASSERT_SIZE(T, n)     checks sizeof(T) == n and 16-byte alignment in C++ only
+//
+// Rules for shared structs (DESIGN.md, "Buffer layout"): float4/uint4 members only (16-byte
+// aligned, identical under std430 and D3D structured-buffer packing), uint instead of bool,
+// no matrices. Shared functions avoid swizzles (glm has none without GLM_FORCE_SWIZZLE) and
+// use only the intrinsics mirrored here.
+
+#ifdef __cplusplus
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#define LUMINA_GPU_NAMESPACE_BEGIN namespace lumina::gpu {
+#define LUMINA_GPU_NAMESPACE_END }
+#define LUMINA_INLINE inline
+#define LUMINA_OUT(T) T&
+#define LUMINA_INOUT(T) T&
+#define LUMINA_PRECISE
+#define LUMINA_STATIC_ASSERT_SIZE(T, n)                                                                     \
+    static_assert(sizeof(T) == (n), #T ": size must match the HLSL layout");                                \
+    static_assert(sizeof(T) % 16 == 0, #T ": GPU structs are 16-byte multiples")
+
+namespace lumina::gpu {
+
+using uint = uint32_t;
+using float2 = glm::vec2;
+using float3 = glm::vec3;
+using float4 = glm::vec4;
+using uint2 = glm::uvec2;
+using uint3 = glm::uvec3;
+using uint4 = glm::uvec4;
+using int3 = glm::ivec3;
+
+inline uint asuint(float x) { return std::bit_cast<uint>(x); }
+inline float asfloat(uint x) { return std::bit_cast<float>(x); }
+using glm::abs;
+using glm::cross;
+using glm::dot;
+using glm::max;
+using glm::min;
+using std::sqrt;
+
+} // namespace lumina::gpu
+
+#else // HLSL
+
+#define LUMINA_GPU_NAMESPACE_BEGIN
+#define LUMINA_GPU_NAMESPACE_END
+#define LUMINA_INLINE
+#define LUMINA_OUT(T) out T
+#define LUMINA_INOUT(T) inout T
+#define LUMINA_PRECISE precise
+#define LUMINA_STATIC_ASSERT_SIZE(T, n)
+
+#endif
+
+#endif
