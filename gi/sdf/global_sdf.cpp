@@ -1,0 +1,109 @@
+#include "gi/sdf/global_sdf.h"
+
+#include <algorithm>
+#include <atomic>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <thread>
+
+namespace lumina::sdf {
+namespace {
+
+struct PreparedInstance {
+    glm::mat4 worldToMesh;
+    float scale;
+    glm::vec3 worldMin, worldMax; // world box of the instance's volume
+    uint32_t volume;
+};
+
+float boxDistance(const glm::vec3& p, const glm::vec3& lo, const glm::vec3& hi) {
+    return glm::length(glm::max(glm::max(lo - p, glm::vec3(0.0f)), p - hi));
+}
+
+} // namespace
+
+GlobalSdf composeGlobalSdf(const SdfAtlas& atlas, std::span<const SdfInstance> instances,
+                           const GlobalSdfSettings& settings) {
+    if (!(settings.voxelSize > 0.0f) || settings.dims.x == 0 || settings.dims.y == 0 ||
+        settings.dims.z == 0) {
+        throw std::invalid_argument("composeGlobalSdf: empty grid or non-positive voxel size");
+    }
+    std::vector<PreparedInstance> prepared;
+    for (size_t i = 0; i < instances.size(); ++i) {
+        const SdfInstance& inst = instances[i];
+        if (inst.volume >= atlas.volumes.size()) {
+            throw std::invalid_argument("composeGlobalSdf: instance " + std::to_string(i) + " names volume " +
+                                        std::to_string(inst.volume) + " of " +
+                                        std::to_string(atlas.volumes.size()));
+        }
+        const gpu::SdfVolumeDesc& desc = atlas.volumes[inst.volume];
+        PreparedInstance p;
+        p.worldToMesh = glm::inverse(inst.meshToWorld);
+        p.scale = std::min({glm::length(glm::vec3(inst.meshToWorld[0])),
+                            glm::length(glm::vec3(inst.meshToWorld[1])),
+                            glm::length(glm::vec3(inst.meshToWorld[2]))});
+        p.volume = inst.volume;
+        p.worldMin = glm::vec3(std::numeric_limits<float>::max());
+        p.worldMax = glm::vec3(-std::numeric_limits<float>::max());
+        const glm::vec3 lo(desc.volumeMinAndVoxelSize), hi(desc.volumeMaxAndInvVoxelSize);
+        for (int c = 0; c < 8; ++c) {
+            const glm::vec3 corner((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
+            const glm::vec3 w(inst.meshToWorld * glm::vec4(corner, 1.0f));
+            p.worldMin = glm::min(p.worldMin, w);
+            p.worldMax = glm::max(p.worldMax, w);
+        }
+        prepared.push_back(p);
+    }
+
+    GlobalSdf grid;
+    grid.dims = settings.dims;
+    grid.boundsMin = settings.boundsMin;
+    grid.voxelSize = settings.voxelSize;
+    const size_t voxels = size_t(grid.dims.x) * grid.dims.y * grid.dims.z;
+    grid.distances.assign(voxels, settings.maxDistance);
+    grid.instances.assign(voxels, kNoInstance);
+
+    std::atomic<uint32_t> nextSlice{0};
+    auto worker = [&] {
+        for (uint32_t z = nextSlice++; z < grid.dims.z; z = nextSlice++) {
+            for (uint32_t y = 0; y < grid.dims.y; ++y) {
+                for (uint32_t x = 0; x < grid.dims.x; ++x) {
+                    const glm::vec3 p = grid.voxelCentre(x, y, z);
+                    float best = settings.maxDistance;
+                    uint32_t bestInstance = kNoInstance;
+                    for (uint32_t i = 0; i < prepared.size(); ++i) {
+                        const PreparedInstance& inst = prepared[i];
+                        // Everything of the instance lies in its world box: it cannot be nearer.
+                        if (boxDistance(p, inst.worldMin, inst.worldMax) >= best) {
+                            continue;
+                        }
+                        const glm::vec3 local(inst.worldToMesh * glm::vec4(p, 1.0f));
+                        const float d = sampleSdf(atlas, inst.volume, local) * inst.scale;
+                        if (d < best) {
+                            best = d;
+                            bestInstance = i;
+                        }
+                    }
+                    const size_t index = grid.voxelIndex(x, y, z);
+                    grid.distances[index] = std::max(best, -settings.maxDistance);
+                    grid.instances[index] = bestInstance;
+                }
+            }
+        }
+    };
+    const uint32_t threadCount =
+        std::min(grid.dims.z, settings.threads != 0 ? settings.threads
+                                                    : std::max(1u, std::thread::hardware_concurrency()));
+    std::vector<std::thread> threads;
+    for (uint32_t i = 1; i < threadCount; ++i) {
+        threads.emplace_back(worker);
+    }
+    worker();
+    for (std::thread& t : threads) {
+        t.join();
+    }
+    return grid;
+}
+
+} // namespace lumina::sdf

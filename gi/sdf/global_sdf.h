@@ -1,0 +1,56 @@
+#pragma once
+// The global SDF composition, CPU reference: signed distance to the nearest instance and
+// that instance's id over a world-space grid, from the mesh SDF atlas and the instance
+// transforms. The GPU pass of issue 10 computes the same thing and is tested against this.
+//
+// Per voxel centre p: for each instance whose world box could hold something nearer than the
+// best so far, d = sampleSdf(atlas, volume, meshToWorld^-1 p) * scale, where scale is the
+// smallest column length of the 3x3 part of meshToWorld (exact for rotation + uniform scale;
+// for non-uniform scale an estimate of the distance, good near surfaces). The union is the
+// minimum; distances are clamped to [-maxDistance, maxDistance], and voxels with nothing
+// within maxDistance get kNoInstance. Inside an instance's volume its distance is the mesh
+// SDF's; beyond every volume the value is a lower bound (sampleSdf), so the instance named
+// there is the one with the smallest bound, not always the nearest.
+#include "gi/sdf/sdf_atlas.h"
+
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <span>
+#include <vector>
+
+namespace lumina::sdf {
+
+inline constexpr uint32_t kNoInstance = 0xFFFFFFFFu;
+
+struct SdfInstance {
+    glm::mat4 meshToWorld{1.0f}; // affine
+    uint32_t volume = 0;         // index into SdfAtlas::volumes
+};
+
+struct GlobalSdfSettings {
+    glm::vec3 boundsMin{0.0f}; // corner of voxel (0,0,0); centres at boundsMin + (i + 0.5) * voxelSize
+    float voxelSize = 1.0f;
+    glm::uvec3 dims{32};
+    float maxDistance = 1e30f;
+    uint32_t threads = 0; // 0: hardware concurrency
+};
+
+struct GlobalSdf {
+    glm::uvec3 dims{0};
+    glm::vec3 boundsMin{0.0f};
+    float voxelSize = 0.0f;
+    std::vector<float> distances;    // world units, x fastest
+    std::vector<uint32_t> instances; // nearest instance (index into the span given), or kNoInstance
+
+    size_t voxelIndex(uint32_t x, uint32_t y, uint32_t z) const {
+        return (size_t(z) * dims.y + y) * dims.x + x;
+    }
+    glm::vec3 voxelCentre(uint32_t x, uint32_t y, uint32_t z) const {
+        return boundsMin + (glm::vec3(x, y, z) + 0.5f) * voxelSize;
+    }
+};
+
+GlobalSdf composeGlobalSdf(const SdfAtlas& atlas, std::span<const SdfInstance> instances,
+                           const GlobalSdfSettings& settings);
+
+} // namespace lumina::sdf
