@@ -1,0 +1,16 @@
+// lumina-kernel: cs main
+// Read-modify-write of one buffer, for UAV -> UAV chains: data[i] += addend + i.
+#include "common/bindings.hlsli"
+#include "rhi_tests/rhi_tests_shared.h"
+
+LUMINA_PUSH_CONSTANTS(ChainConstants, gChain);
+RWByteAddressBuffer gData : register(u0);
+
+static const uint kBytesPerElement = 4;
+
+[numthreads(64, 1, 1)] void main(uint3 id : SV_DispatchThreadID) {
+    if (id.x < gChain.count) {
+        const uint address = id.x * kBytesPerElement;
+        gData.Store(address, gData.Load(address) + gChain.addend + id.x);
+    }
+}

@@ -1,0 +1,76 @@
+#include "tests/rhi/gpu_test_fixture.h"
+
+#include <sstream>
+
+namespace lumina::test {
+
+void GpuTestFixture::openDevice(rhi::Api api) {
+    rhi::DeviceDesc desc;
+    desc.validation = true;
+    desc.synchronizationValidation = true;
+    desc.messageCallback = [log = log_](rhi::MessageSeverity severity, std::string_view message) {
+        const char* level = severity == rhi::MessageSeverity::Error ? "error" : "warning";
+        std::lock_guard lock(log->mutex);
+        log->messages.push_back(std::string(level) + ": " + std::string(message));
+    };
+    device_ = app::createDevice(api, desc);
+    shaders_ = std::make_unique<rhi::ShaderLibrary>(*device_);
+}
+
+void GpuTestFixture::TearDown() {
+    // Leak and lifetime checks report while the device is destroyed: destroy it first.
+    shaders_.reset();
+    device_.reset();
+    const std::vector<std::string> messages = validationMessages();
+    if (!messages.empty() && !expectMessages_) {
+        std::ostringstream report;
+        report << messages.size() << " validation message(s):";
+        for (const std::string& message : messages) {
+            report << "\n  " << message;
+        }
+        ADD_FAILURE() << report.str();
+    }
+}
+
+rhi::IDevice& GpuTestFixture::device() {
+    if (!device_) {
+        throw rhi::Error("GpuTestFixture: no device (openDevice was not called)");
+    }
+    return *device_;
+}
+
+rhi::ShaderLibrary& GpuTestFixture::shaders() {
+    if (!shaders_) {
+        throw rhi::Error("GpuTestFixture: no shader library (openDevice was not called)");
+    }
+    return *shaders_;
+}
+
+std::vector<std::string> GpuTestFixture::validationMessages() const {
+    std::lock_guard lock(log_->mutex);
+    return log_->messages;
+}
+
+void GpuTestFixture::submitAndWait(rhi::ICommandList& list) {
+    rhi::IQueue& queue = device().queue(list.queueType());
+    queue.waitForValue(queue.submit(list));
+}
+
+ComputeKernel GpuTestFixture::loadComputeKernel(std::string_view name,
+                                                std::vector<rhi::BindingLayoutItem> items,
+                                                uint32_t pushConstantBytes) {
+    ComputeKernel kernel;
+    kernel.layout = device().createBindingLayout(
+        {.space = 0, .visibility = rhi::ShaderStageMask::Compute, .items = std::move(items)});
+    kernel.pipeline = device().createComputePipeline({.shader = shaders().get(name),
+                                                      .layouts = {kernel.layout},
+                                                      .pushConstantBytes = pushConstantBytes,
+                                                      .debugName = std::string(name)});
+    return kernel;
+}
+
+std::string apiName(const ::testing::TestParamInfo<rhi::Api>& info) {
+    return std::string(rhi::apiName(info.param));
+}
+
+} // namespace lumina::test

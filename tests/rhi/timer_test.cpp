@@ -1,0 +1,84 @@
+// GPU timers and debug markers.
+#include "shaders/rhi_tests/rhi_tests_shared.h"
+#include "tests/rhi/gpu_test_fixture.h"
+
+namespace lumina::test {
+namespace {
+
+using TimerTest = GpuTest;
+using gpu::ChainConstants;
+
+constexpr uint32_t kCount = 4096, kGroupSize = 64;
+
+TEST_P(TimerTest, RegionsAreNamedNonZeroAndOrdered) {
+    const ComputeKernel kernel = loadComputeKernel(
+        "rhi_tests/accumulate", {{rhi::BindingType::RawBufferUAV, 0}}, sizeof(ChainConstants));
+    rhi::BufferHandle data =
+        device().createBuffer({.size = kCount * 4,
+                               .usage = rhi::BufferUsage::Raw | rhi::BufferUsage::Storage,
+                               .debugName = "timed data"});
+    rhi::CommandListHandle list = device().createCommandList();
+    list->begin();
+    list->beginTimer("frame");
+    list->beginTimer("clear");
+    list->fillBuffer(*data, 0);
+    list->endTimer();
+    list->beginMarker("accumulate passes");
+    list->beginTimer("accumulate");
+    list->setComputeState({.pipeline = kernel.pipeline,
+                           .bindings = {{kernel.layout, {rhi::BindingSetItem::rwRawBuffer(0, data)}}}});
+    for (uint32_t pass = 0; pass < 4; ++pass) {
+        list->pushConstants(ChainConstants{kCount, 0, pass, 0});
+        list->dispatch(kCount / kGroupSize);
+    }
+    list->endTimer();
+    list->endMarker();
+    list->endTimer();
+    list->end();
+    submitAndWait(*list);
+
+    const std::vector<rhi::TimerResult> timers = list->timerResults();
+    ASSERT_EQ(timers.size(), 3u);
+    EXPECT_EQ(timers[0].name, "frame");
+    EXPECT_EQ(timers[1].name, "clear");
+    EXPECT_EQ(timers[2].name, "accumulate");
+    for (const rhi::TimerResult& timer : timers) {
+        SCOPED_TRACE(timer.name);
+        EXPECT_GT(timer.beginTicks, 0u);
+        EXPECT_LE(timer.beginTicks, timer.endTicks);
+        EXPECT_GE(timer.milliseconds, 0.0);
+    }
+    // Nested regions lie inside their parent, sequential ones follow each other.
+    EXPECT_LE(timers[0].beginTicks, timers[1].beginTicks);
+    EXPECT_LE(timers[1].endTicks, timers[2].beginTicks);
+    EXPECT_LE(timers[2].endTicks, timers[0].endTicks);
+    EXPECT_GT(timers[0].endTicks, timers[0].beginTicks) << "the whole frame took no time";
+    const double period = device().capabilities().timestampPeriodNs;
+    EXPECT_NEAR(timers[0].milliseconds, double(timers[0].endTicks - timers[0].beginTicks) * period * 1e-6,
+                1e-9);
+
+    // The results stay those of the last completed submission while the list records again.
+    list->begin();
+    EXPECT_EQ(list->timerResults().size(), 3u);
+    list->end();
+    submitAndWait(*list);
+    EXPECT_TRUE(list->timerResults().empty());
+}
+
+TEST_P(TimerTest, UnbalancedMarkersAndTimersThrow) {
+    rhi::CommandListHandle list = device().createCommandList();
+    list->begin();
+    EXPECT_THROW(list->endTimer(), rhi::Error);
+    EXPECT_THROW(list->endMarker(), rhi::Error);
+    list->beginTimer("open");
+    EXPECT_THROW(list->endMarker(), rhi::Error);
+    EXPECT_THROW(list->end(), rhi::Error);
+    list->endTimer();
+    list->end();
+    submitAndWait(*list);
+}
+
+LUMINA_INSTANTIATE_GPU_TEST(TimerTest);
+
+} // namespace
+} // namespace lumina::test
