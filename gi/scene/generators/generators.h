@@ -1,0 +1,31 @@
+#pragma once
+// The code that makes Lumina's built-in scenes. The small ones (Cornell box, open-top box,
+// furnaces) are written once to scenes/<name>/ as glTF + scene file and loaded from there;
+// atrium and city are generated each time their scene file is loaded.
+#include "gi/scene/scene.h"
+
+#include <cstdint>
+#include <string_view>
+
+namespace lumina::scene {
+
+// The Cornell box after the published data (millimetres); `pointLight` swaps the light quad
+// for a point light of the same total power.
+Scene makeCornellBox(bool pointLight);
+
+// A closed room lit only through an opening in its roof.
+Scene makeOpenTopBox();
+
+// The inside of a closed box whose every surface has albedo `albedo` and emits radiance 1:
+// its exact radiance is 1 / (1 - albedo) everywhere.
+Scene makeFurnace(float albedo);
+
+// A courtyard with two storeys of arcades, columns, coloured drapes and a sun (metres).
+Scene makeAtrium();
+
+// A grid of `buildings` instanced buildings on a ground plane (metres).
+inline constexpr uint32_t kCityDefaultBuildings = 1024;
+inline constexpr uint32_t kCityMaxBuildings = 1u << 20;
+Scene makeCity(uint32_t buildings);
+
+} // namespace lumina::scene
