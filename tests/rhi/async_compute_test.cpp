@@ -11,6 +11,7 @@ using AsyncComputeTest = GpuTest;
 using gpu::ChainConstants;
 
 TEST_P(AsyncComputeTest, ComputeQueueReadsWhatTheGraphicsQueueWrote) {
+    LUMINA_REQUIRE_KERNELS();
     constexpr uint32_t kCount = 2048, kGroupSize = 64;
     const ComputeKernel seed =
         loadComputeKernel("rhi_tests/chain_seed", {{rhi::BindingType::BufferUAV, 0}}, sizeof(ChainConstants));
@@ -62,6 +63,35 @@ TEST_P(AsyncComputeTest, ComputeQueueReadsWhatTheGraphicsQueueWrote) {
     }
     std::cout << "[ info ] separate compute queue: " << std::boolalpha
               << device().capabilities().separateComputeQueue << '\n';
+}
+
+TEST_P(AsyncComputeTest, CopyAndComputeQueuesHandBuffersOverWithoutKernels) {
+    constexpr uint32_t kCount = 1024;
+    std::vector<uint32_t> values(kCount);
+    for (uint32_t i = 0; i < kCount; ++i) {
+        values[i] = i * 2654435761u;
+    }
+    rhi::BufferHandle uploaded =
+        device().createBuffer({.size = kCount * 4, .debugName = "written on the copy queue"});
+    rhi::BufferHandle copied =
+        device().createBuffer({.size = kCount * 4, .debugName = "copied on the compute queue"});
+    rhi::CommandListHandle copyList = device().createCommandList(rhi::QueueType::Copy);
+    copyList->begin();
+    copyList->writeBuffer(*uploaded, values.data(), kCount * 4);
+    copyList->end();
+    rhi::CommandListHandle computeList = device().createCommandList(rhi::QueueType::Compute);
+    computeList->begin();
+    computeList->copyBuffer(*copied, 0, *uploaded, 0, kCount * 4);
+    computeList->end();
+
+    rhi::IQueue& copy = device().queue(rhi::QueueType::Copy);
+    rhi::IQueue& compute = device().queue(rhi::QueueType::Compute);
+    const uint64_t uploadDone = copy.submit(*copyList);
+    compute.waitForQueue(copy, uploadDone);
+    const uint64_t copyDone = compute.submit(*computeList);
+    device().queue(rhi::QueueType::Graphics).waitForQueue(compute, copyDone);
+    compute.waitForValue(copyDone);
+    EXPECT_EQ(readBack<uint32_t>(*copied), values);
 }
 
 TEST_P(AsyncComputeTest, WaitingForAValueNeverSubmittedThrows) {

@@ -21,6 +21,7 @@ class ChainTest : public ComputeTest {
 protected:
     void SetUp() override {
         ComputeTest::SetUp();
+        LUMINA_REQUIRE_KERNELS();
         seed = loadComputeKernel("rhi_tests/chain_seed", {{rhi::BindingType::BufferUAV, 0}},
                                  sizeof(ChainConstants));
         step = loadComputeKernel("rhi_tests/chain_step",
@@ -66,6 +67,7 @@ protected:
 };
 
 TEST_P(ComputeTest, WritePatternUsesEveryBindingKind) {
+    LUMINA_REQUIRE_KERNELS();
     using gpu::PatternElement;
     using gpu::WritePatternConstants;
     using gpu::WritePatternPush;

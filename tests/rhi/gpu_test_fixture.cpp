@@ -1,5 +1,7 @@
 #include "tests/rhi/gpu_test_fixture.h"
 
+#include <filesystem>
+#include <iostream>
 #include <sstream>
 
 namespace lumina::test {
@@ -9,6 +11,11 @@ void GpuTestFixture::openDevice(rhi::Api api) {
     desc.validation = true;
     desc.synchronizationValidation = true;
     desc.messageCallback = [log = log_](rhi::MessageSeverity severity, std::string_view message) {
+        if (severity == rhi::MessageSeverity::Info) {
+            // The backend's own notes ("D3D12: debug layer unavailable"): shown, never a failure.
+            std::cout << "[ info ] " << message << std::endl;
+            return;
+        }
         const char* level = severity == rhi::MessageSeverity::Error ? "error" : "warning";
         std::lock_guard lock(log->mutex);
         log->messages.push_back(std::string(level) + ": " + std::string(message));
@@ -44,6 +51,25 @@ rhi::ShaderLibrary& GpuTestFixture::shaders() {
         throw rhi::Error("GpuTestFixture: no shader library (openDevice was not called)");
     }
     return *shaders_;
+}
+
+std::string GpuTestFixture::kernelsUnavailable() {
+    if (device().api() != rhi::Api::D3D12) {
+        return {};
+    }
+    const rhi::ShaderFormat format = device().capabilities().shaderFormat;
+    const std::string extension = format == rhi::ShaderFormat::Dxil ? ".dxil" : ".dxbc";
+    std::error_code error;
+    for (std::filesystem::recursive_directory_iterator it(shaders().directory(), error), end;
+         !error && it != end; it.increment(error)) {
+        if (it->path().extension() == extension) {
+            return {};
+        }
+    }
+    if (format == rhi::ShaderFormat::Dxbc) {
+        return "no DXIL on this path (vkd3d accepts DXBC only)";
+    }
+    return "no DXIL kernels in " + shaders().directory().string() + " (the build found no DXC)";
 }
 
 std::vector<std::string> GpuTestFixture::validationMessages() const {

@@ -58,6 +58,7 @@ uint8_t toUnorm8(float value) {
 }
 
 TEST_P(GraphicsTest, MultipleRenderTargetsWithDepthArePixelExact) {
+    LUMINA_REQUIRE_KERNELS();
     // Far quad A (drawn last), near quad B (drawn first), back-facing quad D (nearest of all,
     // must be culled). The colours are multiples of 1/255 so RGBA8 stores them exactly.
     const Quad far{{4, 4, 20, 20}, 0.5f, {1.0f, 0.0f, 0.2f, 1.0f}, 1.0f};

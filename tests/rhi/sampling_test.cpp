@@ -37,6 +37,7 @@ TEST_P(SamplingTest, SamplersAreCreatedForEveryMode) {
 }
 
 TEST_P(SamplingTest, KernelSamplesTexturesArraysAndCubeFaces) {
+    LUMINA_REQUIRE_KERNELS();
     constexpr uint32_t kWidth = 5, kHeight = 3, kLayers = 3, kProbes = kWidth * kHeight;
     auto texel2D = [](uint32_t x, uint32_t y) {
         return std::array<float, 4>{float(x), float(y), 0.5f, 1.0f};

@@ -86,6 +86,57 @@ TEST_P(TextureTest, ClearColorFillsEveryMipAndLayer) {
     EXPECT_EQ(asValues<uint32_t>(rhi::readTexture(device(), *uints)), std::vector<uint32_t>(14, 0xCAFEF00D));
 }
 
+TEST_P(TextureTest, ClearColorWorksForEveryUsage) {
+    // Backends may clear through different paths per usage (D3D12: a render-target view, a
+    // UAV, or a copy from upload memory); each must write every mip and layer.
+    const rhi::TextureUsage usages[] = {rhi::TextureUsage::Sampled,
+                                        rhi::TextureUsage::Sampled | rhi::TextureUsage::RenderTarget,
+                                        rhi::TextureUsage::Sampled | rhi::TextureUsage::Storage};
+    for (const rhi::TextureUsage usage : usages) {
+        SCOPED_TRACE("usage " + std::to_string(uint32_t(usage)));
+        rhi::TextureHandle floats =
+            device().createTexture({.dimension = rhi::TextureDimension::Texture2DArray,
+                                    .format = rhi::Format::RGBA16_FLOAT,
+                                    .width = 6,
+                                    .height = 5,
+                                    .arrayLayers = 2,
+                                    .mipLevels = 3,
+                                    .usage = usage,
+                                    .debugName = "cleared half floats"});
+        rhi::TextureHandle uints = device().createTexture({.format = rhi::Format::RG32_UINT,
+                                                           .width = 4,
+                                                           .height = 4,
+                                                           .mipLevels = 2,
+                                                           .usage = usage,
+                                                           .debugName = "cleared uints"});
+        rhi::CommandListHandle list = device().createCommandList();
+        list->begin();
+        list->clearColor(*floats, {0.25f, -1.5f, 2.0f, 1.0f});
+        list->clearColorUint(*uints, {7, 123456, 0, 0});
+        list->end();
+        submitAndWait(*list);
+        // 0.25, -1.5, 2.0, 1.0 as IEEE half floats.
+        const std::vector<uint16_t> half = {0x3400, 0xBE00, 0x4000, 0x3C00};
+        for (uint32_t layer = 0; layer < 2; ++layer) {
+            for (uint32_t mip = 0; mip < 3; ++mip) {
+                const std::vector<uint16_t> texels =
+                    asValues<uint16_t>(rhi::readTexture(device(), *floats, {mip, layer}));
+                for (size_t i = 0; i < texels.size(); ++i) {
+                    ASSERT_EQ(texels[i], half[i % 4]) << "mip " << mip << " layer " << layer << " at " << i;
+                }
+            }
+        }
+        for (uint32_t mip = 0; mip < 2; ++mip) {
+            const std::vector<uint32_t> texels =
+                asValues<uint32_t>(rhi::readTexture(device(), *uints, {mip, 0}));
+            for (size_t i = 0; i < texels.size(); i += 2) {
+                ASSERT_EQ(texels[i], 7u) << "mip " << mip;
+                ASSERT_EQ(texels[i + 1], 123456u) << "mip " << mip;
+            }
+        }
+    }
+}
+
 TEST_P(TextureTest, ClearDepth) {
     rhi::TextureHandle depth = device().createTexture({.format = rhi::Format::D32_FLOAT,
                                                        .width = 8,

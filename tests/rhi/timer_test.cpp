@@ -11,6 +11,7 @@ using gpu::ChainConstants;
 constexpr uint32_t kCount = 4096, kGroupSize = 64;
 
 TEST_P(TimerTest, RegionsAreNamedNonZeroAndOrdered) {
+    LUMINA_REQUIRE_KERNELS();
     const ComputeKernel kernel = loadComputeKernel(
         "rhi_tests/accumulate", {{rhi::BindingType::RawBufferUAV, 0}}, sizeof(ChainConstants));
     rhi::BufferHandle data =
@@ -63,6 +64,42 @@ TEST_P(TimerTest, RegionsAreNamedNonZeroAndOrdered) {
     list->end();
     submitAndWait(*list);
     EXPECT_TRUE(list->timerResults().empty());
+}
+
+TEST_P(TimerTest, CopiesAreTimedWithoutKernels) {
+    constexpr uint64_t kBytes = 4u << 20;
+    rhi::BufferHandle source = device().createBuffer({.size = kBytes, .debugName = "timed source"});
+    rhi::BufferHandle target = device().createBuffer({.size = kBytes, .debugName = "timed target"});
+    const std::vector<uint32_t> pattern(kBytes / 4, 0x5eed5eedu);
+    rhi::CommandListHandle list = device().createCommandList();
+    list->begin();
+    list->beginTimer("copies");
+    list->beginTimer("upload");
+    list->writeBuffer(*source, pattern.data(), kBytes);
+    list->endTimer();
+    list->beginMarker("copy");
+    list->beginTimer("copy");
+    list->copyBuffer(*target, 0, *source, 0, kBytes);
+    list->endTimer();
+    list->endMarker();
+    list->endTimer();
+    list->end();
+    submitAndWait(*list);
+
+    const std::vector<rhi::TimerResult> timers = list->timerResults();
+    ASSERT_EQ(timers.size(), 3u);
+    EXPECT_EQ(timers[0].name, "copies");
+    EXPECT_EQ(timers[1].name, "upload");
+    EXPECT_EQ(timers[2].name, "copy");
+    for (const rhi::TimerResult& timer : timers) {
+        EXPECT_GE(timer.endTicks, timer.beginTicks) << timer.name;
+        EXPECT_GE(timer.milliseconds, 0.0) << timer.name;
+    }
+    // Nested regions lie inside the one around them.
+    EXPECT_LE(timers[0].beginTicks, timers[1].beginTicks);
+    EXPECT_GE(timers[0].endTicks, timers[2].endTicks);
+    EXPECT_LE(timers[1].endTicks, timers[2].beginTicks);
+    EXPECT_EQ(readBack<uint32_t>(*target), pattern);
 }
 
 TEST_P(TimerTest, UnbalancedMarkersAndTimersThrow) {
