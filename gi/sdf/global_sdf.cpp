@@ -15,6 +15,7 @@ struct PreparedInstance {
     float scale;
     glm::vec3 worldMin, worldMax; // world box of the instance's volume
     uint32_t volume;
+    float shell; // subtracted from open volumes' distances
 };
 
 float boxDistance(const glm::vec3& p, const glm::vec3& lo, const glm::vec3& hi) {
@@ -22,6 +23,29 @@ float boxDistance(const glm::vec3& p, const glm::vec3& lo, const glm::vec3& hi) 
 }
 
 } // namespace
+
+bvh::Aabb instanceWorldBox(const gpu::SdfVolumeDesc& volume, const glm::mat4& meshToWorld) {
+    bvh::Aabb box;
+    const glm::vec3 lo(volume.volumeMinAndVoxelSize), hi(volume.volumeMaxAndInvVoxelSize);
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec3 corner((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
+        box.extend(glm::vec3(meshToWorld * glm::vec4(corner, 1.0f)));
+    }
+    return box;
+}
+
+float instanceDistanceScale(const glm::mat4& meshToWorld) {
+    return std::min({glm::length(glm::vec3(meshToWorld[0])), glm::length(glm::vec3(meshToWorld[1])),
+                     glm::length(glm::vec3(meshToWorld[2]))});
+}
+
+float openSurfaceShell(const gpu::SdfVolumeDesc& volume, float distanceScale, float globalVoxelSize) {
+    if ((volume.dims.w & LUMINA_SDF_VOLUME_OPEN) == 0) {
+        return 0.0f;
+    }
+    return LUMINA_SDF_OPEN_SURFACE_GLOBAL_SHELL_VOXELS * globalVoxelSize +
+           LUMINA_SDF_OPEN_SURFACE_THRESHOLD_VOXELS * volume.volumeMinAndVoxelSize.w * distanceScale;
+}
 
 GlobalSdf composeGlobalSdf(const SdfAtlas& atlas, std::span<const SdfInstance> instances,
                            const GlobalSdfSettings& settings) {
@@ -37,22 +61,14 @@ GlobalSdf composeGlobalSdf(const SdfAtlas& atlas, std::span<const SdfInstance> i
                                         std::to_string(inst.volume) + " of " +
                                         std::to_string(atlas.volumes.size()));
         }
-        const gpu::SdfVolumeDesc& desc = atlas.volumes[inst.volume];
         PreparedInstance p;
         p.worldToMesh = glm::inverse(inst.meshToWorld);
-        p.scale = std::min({glm::length(glm::vec3(inst.meshToWorld[0])),
-                            glm::length(glm::vec3(inst.meshToWorld[1])),
-                            glm::length(glm::vec3(inst.meshToWorld[2]))});
+        p.scale = instanceDistanceScale(inst.meshToWorld);
         p.volume = inst.volume;
-        p.worldMin = glm::vec3(std::numeric_limits<float>::max());
-        p.worldMax = glm::vec3(-std::numeric_limits<float>::max());
-        const glm::vec3 lo(desc.volumeMinAndVoxelSize), hi(desc.volumeMaxAndInvVoxelSize);
-        for (int c = 0; c < 8; ++c) {
-            const glm::vec3 corner((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
-            const glm::vec3 w(inst.meshToWorld * glm::vec4(corner, 1.0f));
-            p.worldMin = glm::min(p.worldMin, w);
-            p.worldMax = glm::max(p.worldMax, w);
-        }
+        const bvh::Aabb box = instanceWorldBox(atlas.volumes[inst.volume], inst.meshToWorld);
+        p.worldMin = box.min;
+        p.worldMax = box.max;
+        p.shell = openSurfaceShell(atlas.volumes[inst.volume], p.scale, settings.voxelSize);
         prepared.push_back(p);
     }
 
@@ -75,11 +91,11 @@ GlobalSdf composeGlobalSdf(const SdfAtlas& atlas, std::span<const SdfInstance> i
                     for (uint32_t i = 0; i < prepared.size(); ++i) {
                         const PreparedInstance& inst = prepared[i];
                         // Everything of the instance lies in its world box: it cannot be nearer.
-                        if (boxDistance(p, inst.worldMin, inst.worldMax) >= best) {
+                        if (boxDistance(p, inst.worldMin, inst.worldMax) - inst.shell >= best) {
                             continue;
                         }
                         const glm::vec3 local(inst.worldToMesh * glm::vec4(p, 1.0f));
-                        const float d = sampleSdf(atlas, inst.volume, local) * inst.scale;
+                        const float d = sampleSdf(atlas, inst.volume, local) * inst.scale - inst.shell;
                         if (d < best) {
                             best = d;
                             bestInstance = i;

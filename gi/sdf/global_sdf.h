@@ -11,6 +11,13 @@
 // within maxDistance get kNoInstance. Inside an instance's volume its distance is the mesh
 // SDF's; beyond every volume the value is a lower bound (sampleSdf), so the instance named
 // there is the one with the smallest bound, not always the nearest.
+//
+// Open volumes (LUMINA_SDF_VOLUME_OPEN, e.g. a quad, stored unsigned) contribute d - shell
+// (openSurfaceShell): an unsigned plane between two voxel centres reads up to half a voxel on
+// the plane, of the mesh SDF and again of the global grid, so without a shell a tracer could
+// pass through it. With shell = 0.5 global voxel + 0.6 mesh voxel (world units), both grid
+// voxels next to the surface are negative: a zero crossing any tracer finds. The surface
+// thickens by the shell; the culling test accounts for it.
 #include "gi/sdf/sdf_atlas.h"
 
 #include <cstdint>
@@ -49,6 +56,16 @@ struct GlobalSdf {
         return boundsMin + (glm::vec3(x, y, z) + 0.5f) * voxelSize;
     }
 };
+
+// The world box of an instance's SDF volume (its eight corners transformed) and its distance
+// scale (the smallest column length of the 3x3 part), as composeGlobalSdf computes them; the
+// GPU instance table (gi/sdf/scene_sdf_data.h) uses the same functions, so that both cull
+// instances alike.
+bvh::Aabb instanceWorldBox(const gpu::SdfVolumeDesc& volume, const glm::mat4& meshToWorld);
+float instanceDistanceScale(const glm::mat4& meshToWorld);
+// The shell (world units) an instance of `volume` with distance scale `distanceScale` gets
+// in a global SDF of voxel size `globalVoxelSize`; 0 for closed volumes.
+float openSurfaceShell(const gpu::SdfVolumeDesc& volume, float distanceScale, float globalVoxelSize);
 
 GlobalSdf composeGlobalSdf(const SdfAtlas& atlas, std::span<const SdfInstance> instances,
                            const GlobalSdfSettings& settings);

@@ -175,7 +175,9 @@ SdfAtlas packSdfs(std::span<const MeshSdf> sdfs, const SdfAtlasSettings& setting
         desc.volumeMinAndVoxelSize = glm::vec4(sdf.volumeMin, sdf.voxelSize);
         desc.volumeMaxAndInvVoxelSize = glm::vec4(sdf.volumeMax(), toVoxels);
         desc.atlasOffset = glm::uvec4(o, 0);
-        desc.dims = glm::uvec4(sdf.dims, 0);
+        const bool open =
+            std::none_of(sdf.distances.begin(), sdf.distances.end(), [](float d) { return d < 0.0f; });
+        desc.dims = glm::uvec4(sdf.dims, open ? LUMINA_SDF_VOLUME_OPEN : 0u);
     }
     return atlas;
 }

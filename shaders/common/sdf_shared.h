@@ -20,8 +20,22 @@ struct SdfVolumeDesc {
     float4 volumeMaxAndInvVoxelSize; // xyz: mesh-space far corner (volumeMin + dims * voxelSize); w: 1 /
                                      // voxel size
     uint4 atlasOffset;               // xyz: atlas texel holding voxel (0,0,0); w: 0
-    uint4 dims;                      // xyz: voxels per axis; w: 0
+    uint4 dims;                      // xyz: voxels per axis; w: flags (LUMINA_SDF_VOLUME_OPEN)
 };
+
+// The mesh is open: it has boundary edges (a quad, a drape, walls without a floor) or no
+// negative voxel at all. Open surfaces are stored unsigned (gi/sdf/mesh_sdf.h), and their
+// trilinear samples need not fall below half a voxel on the surface, so tracers hit them with a
+// thicker threshold (sdf_near_field.hlsli) and the global SDF gives them a shell
+// (gi/sdf/global_sdf.h).
+#define LUMINA_SDF_VOLUME_OPEN 1u
+// Hit threshold, in voxels, of open volumes: on a plane midway between voxel centres the
+// trilinear value of the unsigned distance is half a voxel (the worst case; a plane tilted
+// through a cell gives less), plus a margin for R16F rounding and hardware filter weights.
+#define LUMINA_SDF_OPEN_SURFACE_THRESHOLD_VOXELS 0.6f
+// Shell of an open volume in the global SDF: this many global voxels plus
+// LUMINA_SDF_OPEN_SURFACE_THRESHOLD_VOXELS of the mesh's own (gi/sdf/global_sdf.h).
+#define LUMINA_SDF_OPEN_SURFACE_GLOBAL_SHELL_VOXELS 0.5f
 
 // Per-dispatch facts about the atlas texture, for whoever samples it.
 struct SdfAtlasInfo {

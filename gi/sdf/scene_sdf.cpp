@@ -1,0 +1,190 @@
+#include "gi/sdf/scene_sdf.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace lumina::sdf {
+namespace {
+
+// Compose groups per dispatch row: brick = groupId.y * kComposeGroupsPerRow + groupId.x,
+// well inside every API's 65535 groups per dimension.
+constexpr uint32_t kComposeGroupsPerRow = 1024;
+
+template <typename T>
+rhi::BufferHandle structuredBuffer(rhi::IDevice& device, const std::vector<T>& data, const char* name) {
+    // Never empty: a zero-sized buffer cannot be bound; one zeroed element stands in.
+    const std::vector<T> one(1, T{});
+    const std::vector<T>& contents = data.empty() ? one : data;
+    return rhi::createBufferWithData(device,
+                                     {.size = contents.size() * sizeof(T),
+                                      .structStride = sizeof(T),
+                                      .usage = rhi::BufferUsage::Structured,
+                                      .debugName = name},
+                                     contents.data(), contents.size() * sizeof(T));
+}
+
+std::vector<bvh::Aabb> worldBoxes(const std::vector<gpu::SdfInstanceDesc>& instances) {
+    std::vector<bvh::Aabb> boxes;
+    boxes.reserve(instances.size());
+    for (const gpu::SdfInstanceDesc& instance : instances) {
+        boxes.push_back(worldBox(instance));
+    }
+    return boxes;
+}
+
+// A structured buffer of at least `count` elements, grown (by half again) when too small.
+template <typename T>
+void ensureCapacity(rhi::IDevice& device, rhi::BufferHandle& buffer, size_t count, const char* name) {
+    const uint64_t needed = std::max<size_t>(count, 1) * sizeof(T);
+    if (buffer && buffer->desc().size >= needed) {
+        return;
+    }
+    buffer = device.createBuffer({.size = needed + needed / 2,
+                                  .structStride = sizeof(T),
+                                  .usage = rhi::BufferUsage::Structured,
+                                  .debugName = name});
+}
+
+} // namespace
+
+SceneSdf::SceneSdf(rhi::IDevice& device, const scene::Scene& scene, const SceneSdfSettings& settings)
+    : SceneSdf(device, buildSceneSdfData(scene, settings)) {}
+
+SceneSdf::SceneSdf(rhi::IDevice& device, SceneSdfData data)
+    : device_(device), data_(std::move(data)), tracker_(data_.global) {
+    bvh_ = buildInstanceBvh(worldBoxes(data_.instances));
+    for (uint32_t i = 0; i < data_.instances.size(); ++i) {
+        const uint32_t sceneInstance = data_.instances[i].ids.z;
+        if (tableIndex_.size() <= sceneInstance) {
+            tableIndex_.resize(sceneInstance + 1, kNoVolume);
+        }
+        tableIndex_[sceneInstance] = i;
+    }
+
+    const SdfAtlas& atlas = data_.atlas;
+    const bool half = atlas.format == SdfTexelFormat::R16F;
+    const glm::uvec3 atlasDims = atlas.volumes.empty() ? glm::uvec3(1) : atlas.dims;
+    atlas_ = device.createTexture({.dimension = rhi::TextureDimension::Texture3D,
+                                   .format = half ? rhi::Format::R16_FLOAT : rhi::Format::R32_FLOAT,
+                                   .width = atlasDims.x,
+                                   .height = atlasDims.y,
+                                   .depth = atlasDims.z,
+                                   .debugName = "sdf atlas"});
+    if (atlas.volumes.empty()) {
+        const uint16_t emptyTexel = floatToHalf(kSdfEmptyTexel);
+        const float emptyTexel32 = kSdfEmptyTexel;
+        rhi::writeTexture(device, *atlas_, {}, half ? static_cast<const void*>(&emptyTexel) : &emptyTexel32);
+    } else {
+        rhi::writeTexture(device, *atlas_, {}, atlas.data());
+    }
+    volumes_ = structuredBuffer(device, atlas.volumes, "sdf volumes");
+    instances_ = structuredBuffer(device, data_.instances, "sdf instances");
+    nodes_ = structuredBuffer(device, bvh_.nodes, "sdf instance bvh");
+    instanceList_ = structuredBuffer(device, bvh_.instances, "sdf instance list");
+    const gpu::SdfSceneInfo info = sceneInfo();
+    sceneInfo_ = rhi::createBufferWithData(
+        device, {.size = sizeof(info), .usage = rhi::BufferUsage::Constant, .debugName = "sdf scene info"},
+        &info, sizeof(info));
+    const glm::uvec3 dims = data_.global.dims;
+    global_ = device.createTexture({.dimension = rhi::TextureDimension::Texture3D,
+                                    .format = rhi::Format::RG32_FLOAT,
+                                    .width = dims.x,
+                                    .height = dims.y,
+                                    .depth = dims.z,
+                                    .usage = rhi::TextureUsage::Sampled | rhi::TextureUsage::Storage,
+                                    .debugName = "global sdf"});
+    linearClamp_ = device.createSampler({.minFilter = rhi::Filter::Linear,
+                                         .magFilter = rhi::Filter::Linear,
+                                         .mipFilter = rhi::Filter::Point,
+                                         .debugName = "sdf linear clamp"});
+}
+
+void SceneSdf::setInstanceTransform(uint32_t sceneInstance, const glm::mat4& transform) {
+    if (sceneInstance >= tableIndex_.size() || tableIndex_[sceneInstance] == kNoVolume) {
+        return;
+    }
+    gpu::SdfInstanceDesc& desc = data_.instances[tableIndex_[sceneInstance]];
+    const gpu::SdfInstanceDesc moved =
+        makeInstanceDesc(data_.atlas.volumes[desc.ids.x], desc.ids.x, transform, desc.ids.y, desc.ids.z,
+                         data_.global.voxelSize);
+    if (instanceHash(moved) != instanceHash(desc)) {
+        desc = moved;
+        tablesDirty_ = true;
+    }
+}
+
+void SceneSdf::syncTransforms(const scene::Scene& scene) {
+    for (uint32_t i = 0; i < scene.instances.size(); ++i) {
+        setInstanceTransform(i, scene.instances[i].transform);
+    }
+}
+
+void SceneSdf::invalidateGlobalSdf() {
+    tracker_.reset();
+}
+
+void SceneSdf::uploadTables(rhi::ICommandList& commands) {
+    bvh_ = buildInstanceBvh(worldBoxes(data_.instances));
+    // Same instance count, so the median-split tree has the same node count as before.
+    commands.writeBuffer(*instances_, data_.instances.data(),
+                         data_.instances.size() * sizeof(gpu::SdfInstanceDesc));
+    commands.writeBuffer(*nodes_, bvh_.nodes.data(), bvh_.nodes.size() * sizeof(gpu::BvhNode));
+    commands.writeBuffer(*instanceList_, bvh_.instances.data(), bvh_.instances.size() * sizeof(uint32_t));
+}
+
+void SceneSdf::record(gi::FrameContext& frame) {
+    if (tablesDirty_ && !data_.instances.empty()) {
+        uploadTables(frame.commands());
+    }
+    tablesDirty_ = false;
+    GlobalSdfChangeTracker::Changes changes = tracker_.update(data_.instances);
+    lastCompose_ = {};
+    lastCompose_.full = changes.full;
+    lastCompose_.changedInstances = changes.changedInstances;
+    lastCompose_.reason = changes.reason;
+    if (changes.dirtyBrickCount == 0) {
+        lastCompose_.skipped = true;
+        frame.skip(kComposePassName, changes.reason);
+        return;
+    }
+    ComposeBatch batch = makeComposeBatch(data_.global, data_.instances, changes.dirtyBricks);
+    lastCompose_.bricks = uint32_t(batch.bricks.size());
+    lastCompose_.voxels = batch.voxels;
+    if (batch.brickInstances.empty()) {
+        batch.brickInstances.push_back(0); // bound, never read: every brick's list is empty
+    }
+    ensureCapacity<gpu::GlobalSdfBrick>(device_, bricks_, batch.bricks.size(), "sdf compose bricks");
+    ensureCapacity<uint32_t>(device_, brickInstances_, batch.brickInstances.size(),
+                             "sdf compose brick instances");
+    rhi::ICommandList& commands = frame.commands();
+    commands.writeBuffer(*bricks_, batch.bricks.data(), batch.bricks.size() * sizeof(gpu::GlobalSdfBrick));
+    commands.writeBuffer(*brickInstances_, batch.brickInstances.data(),
+                         batch.brickInstances.size() * sizeof(uint32_t));
+    const uint32_t count = uint32_t(batch.bricks.size());
+    const uint32_t groupsX = std::min(count, kComposeGroupsPerRow);
+    const uint32_t groupsY = (count + kComposeGroupsPerRow - 1) / kComposeGroupsPerRow;
+    frame.compute(kComposePassName, "sdf/global_sdf_compose")
+        .constantBuffer(0, sceneInfo_)
+        .read(0, atlas_)
+        .read(1, volumes_)
+        .read(2, instances_)
+        .read(3, bricks_)
+        .read(4, brickInstances_)
+        .sampler(0, linearClamp_)
+        .write(0, global_)
+        .constants(gpu::GlobalSdfComposeConstants{count, kComposeGroupsPerRow, 0, 0})
+        .dispatch(groupsX, groupsY);
+}
+
+gi::ComputePass& SceneSdf::bindForTracing(gi::ComputePass& pass) const {
+    return pass.constantBuffer(0, sceneInfo_)
+        .read(0, atlas_)
+        .read(1, volumes_)
+        .read(2, instances_)
+        .read(3, nodes_)
+        .read(4, instanceList_)
+        .read(5, global_)
+        .sampler(0, linearClamp_);
+}
+
+} // namespace lumina::sdf

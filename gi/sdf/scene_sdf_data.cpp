@@ -1,0 +1,227 @@
+#include "gi/sdf/scene_sdf_data.h"
+
+#include "gi/sdf/sdf_cache.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+#include <unordered_map>
+
+namespace lumina::sdf {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Rows r of a 3x4 affine matrix (glm is column-major: m[column][row]).
+void writeRows(const glm::mat4& m, gpu::float4 rows[3]) {
+    for (int r = 0; r < 3; ++r) {
+        rows[r] = glm::vec4(m[0][r], m[1][r], m[2][r], m[3][r]);
+    }
+}
+
+} // namespace
+
+gpu::SdfInstanceDesc makeInstanceDesc(const gpu::SdfVolumeDesc& volume, uint32_t volumeIndex,
+                                      const glm::mat4& meshToWorld, uint32_t mesh, uint32_t sceneInstance,
+                                      float globalVoxelSize) {
+    gpu::SdfInstanceDesc desc{};
+    writeRows(glm::inverse(meshToWorld), desc.worldToObject);
+    writeRows(meshToWorld, desc.objectToWorld);
+    const bvh::Aabb box = instanceWorldBox(volume, meshToWorld);
+    const float scale = instanceDistanceScale(meshToWorld);
+    desc.worldMinAndScale = glm::vec4(box.min, scale);
+    desc.worldMax = glm::vec4(box.max, openSurfaceShell(volume, scale, globalVoxelSize));
+    desc.ids = glm::uvec4(volumeIndex, mesh, sceneInstance, 0u);
+    return desc;
+}
+
+glm::mat4 objectToWorld(const gpu::SdfInstanceDesc& instance) {
+    glm::mat4 m(1.0f);
+    for (int r = 0; r < 3; ++r) {
+        for (int c = 0; c < 4; ++c) {
+            m[c][r] = instance.objectToWorld[r][c];
+        }
+    }
+    return m;
+}
+
+bvh::Aabb worldBox(const gpu::SdfInstanceDesc& instance) {
+    return {glm::vec3(instance.worldMinAndScale), glm::vec3(instance.worldMax)};
+}
+
+GlobalSdfSettings globalGridFor(const bvh::Aabb& box, uint32_t resolution, uint32_t padding,
+                                float maxDistanceVoxels) {
+    if (resolution < 2 * padding + 1 || resolution > 1024) {
+        throw std::invalid_argument("global SDF resolution " + std::to_string(resolution) + " with padding " +
+                                    std::to_string(padding) + ": need 2 * padding < resolution <= 1024");
+    }
+    if (!(maxDistanceVoxels > 0.0f)) {
+        throw std::invalid_argument("global SDF truncation must be positive, got " +
+                                    std::to_string(maxDistanceVoxels) + " voxels");
+    }
+    GlobalSdfSettings grid;
+    const bvh::Aabb b = box.empty() ? bvh::Aabb{glm::vec3(-0.5f), glm::vec3(0.5f)} : box;
+    const glm::vec3 extent = b.size();
+    const float longest = std::max({extent.x, extent.y, extent.z, 1e-6f * (1.0f + glm::length(b.centre()))});
+    const uint32_t interior = resolution - 2 * padding;
+    grid.voxelSize = longest / float(interior);
+    for (int a = 0; a < 3; ++a) {
+        const uint32_t inner =
+            std::clamp(uint32_t(std::ceil(extent[a] / grid.voxelSize - 1e-3f)), 1u, interior);
+        grid.dims[a] = inner + 2 * padding;
+    }
+    grid.boundsMin = b.centre() - 0.5f * glm::vec3(grid.dims) * grid.voxelSize;
+    grid.maxDistance = maxDistanceVoxels * grid.voxelSize;
+    return grid;
+}
+
+std::vector<SdfInstance> SceneSdfData::composeInstances() const {
+    std::vector<SdfInstance> out;
+    out.reserve(instances.size());
+    for (const gpu::SdfInstanceDesc& instance : instances) {
+        out.push_back({objectToWorld(instance), instance.ids.x});
+    }
+    return out;
+}
+
+gpu::SdfSceneInfo SceneSdfData::sceneInfo(uint32_t instanceBvhNodes) const {
+    gpu::SdfSceneInfo info{};
+    info.invAtlasDims = atlas.info().invAtlasDims;
+    info.globalMinAndVoxelSize = glm::vec4(global.boundsMin, global.voxelSize);
+    info.globalMaxAndMaxDistance =
+        glm::vec4(global.boundsMin + glm::vec3(global.dims) * global.voxelSize, global.maxDistance);
+    info.globalDims = glm::uvec4(global.dims, 0u);
+    info.counts =
+        glm::uvec4(uint32_t(instances.size()), instanceBvhNodes, uint32_t(atlas.volumes.size()), 0u);
+    return info;
+}
+
+bool hasBoundaryEdges(std::span<const glm::vec3> positions, std::span<const uint32_t> indices) {
+    // Vertices welded by exact position, then every undirected edge counted.
+    std::map<std::array<float, 3>, uint32_t> weld;
+    std::vector<uint32_t> id(positions.size());
+    for (size_t i = 0; i < positions.size(); ++i) {
+        id[i] = weld.try_emplace({positions[i].x, positions[i].y, positions[i].z}, uint32_t(weld.size()))
+                    .first->second;
+    }
+    std::unordered_map<uint64_t, uint32_t> edges;
+    for (size_t t = 0; t + 2 < indices.size(); t += 3) {
+        for (int e = 0; e < 3; ++e) {
+            const uint32_t a = id[indices[t + e]], b = id[indices[t + (e + 1) % 3]];
+            if (a != b) {
+                ++edges[(uint64_t(std::min(a, b)) << 32) | std::max(a, b)];
+            }
+        }
+    }
+    return std::any_of(edges.begin(), edges.end(), [](const auto& edge) { return edge.second % 2 != 0; });
+}
+
+SceneSdfData buildSceneSdfData(const scene::Scene& scene, const SceneSdfSettings& settings) {
+    validate(settings.mesh);
+    SceneSdfData data;
+    std::vector<bool> used(scene.meshes.size(), false);
+    for (const scene::Instance& instance : scene.instances) {
+        if (instance.mesh >= scene.meshes.size()) {
+            throw std::invalid_argument("scene '" + scene.name + "': instance '" + instance.name +
+                                        "' names mesh " + std::to_string(instance.mesh) + " of " +
+                                        std::to_string(scene.meshes.size()));
+        }
+        used[instance.mesh] = true;
+    }
+
+    const Clock::time_point meshStart = Clock::now();
+    SdfCache cache(settings.cacheDirectory.empty() ? SdfCache::defaultDirectory() : settings.cacheDirectory);
+    std::vector<MeshSdf> sdfs;
+    data.meshVolume.assign(scene.meshes.size(), kNoVolume);
+    std::unordered_map<uint64_t, uint32_t> volumeByKey;
+    std::vector<MeshSdfReport> sharedLines; // appended after the built and loaded ones
+    for (uint32_t m = 0; m < scene.meshes.size(); ++m) {
+        const scene::Mesh& mesh = scene.meshes[m];
+        if (!used[m] || mesh.indices.empty()) {
+            continue;
+        }
+        MeshSdfReport line;
+        line.mesh = m;
+        line.name = mesh.name;
+        // Meshes of identical geometry (the atrium's three drapes) share one volume.
+        const uint64_t key = SdfCache::key(mesh.positions, mesh.indices, settings.mesh);
+        if (const auto same = volumeByKey.find(key); same != volumeByKey.end()) {
+            const MeshSdf& shared = sdfs[same->second];
+            line.sharedWith = data.report.meshes[same->second].mesh;
+            line.dims = shared.dims;
+            line.triangles = shared.stats.triangles;
+            data.meshVolume[m] = same->second;
+            ++data.report.meshesShared;
+            sharedLines.push_back(std::move(line));
+            continue;
+        }
+        volumeByKey.emplace(key, uint32_t(sdfs.size()));
+        MeshSdf sdf;
+        if (settings.useCache) {
+            SdfCacheReport cacheReport;
+            sdf = cache.getOrBuild(mesh.positions, mesh.indices, settings.mesh, &cacheReport);
+            line.fromCache = cacheReport.fromCache;
+            line.seconds = cacheReport.seconds;
+            line.note = cacheReport.note;
+        } else {
+            sdf = buildMeshSdf(mesh.positions, mesh.indices, settings.mesh);
+            line.seconds = sdf.stats.seconds;
+            line.note = "cache off";
+        }
+        line.dims = sdf.dims;
+        line.triangles = sdf.stats.triangles;
+        const uint64_t voxels = uint64_t(sdf.dims.x) * sdf.dims.y * sdf.dims.z;
+        (line.fromCache ? data.report.voxelsLoaded : data.report.voxelsBuilt) += voxels;
+        ++(line.fromCache ? data.report.meshesLoaded : data.report.meshesBuilt);
+        data.meshVolume[m] = uint32_t(sdfs.size());
+        sdfs.push_back(std::move(sdf));
+        data.report.meshes.push_back(std::move(line));
+    }
+    data.report.meshSeconds = secondsSince(meshStart);
+    // report.meshes[v] is volume v's own line up to here; then the sharing meshes.
+    data.report.meshes.insert(data.report.meshes.end(), sharedLines.begin(), sharedLines.end());
+
+    const Clock::time_point packStart = Clock::now();
+    SdfAtlasSettings atlasSettings;
+    atlasSettings.format = settings.atlasFormat;
+    data.atlas = packSdfs(sdfs, atlasSettings);
+    data.report.packSeconds = secondsSince(packStart);
+
+    for (MeshSdfReport& line : data.report.meshes) {
+        const scene::Mesh& mesh = scene.meshes[line.mesh];
+        gpu::SdfVolumeDesc& volume = data.atlas.volumes[data.meshVolume[line.mesh]];
+        if (hasBoundaryEdges(mesh.positions, mesh.indices)) {
+            volume.dims.w |= LUMINA_SDF_VOLUME_OPEN;
+        }
+        line.open = (volume.dims.w & LUMINA_SDF_VOLUME_OPEN) != 0;
+    }
+
+    // The grid covers every instance's volume; the shells need its voxel size.
+    bvh::Aabb sceneBox;
+    for (const scene::Instance& instance : scene.instances) {
+        const uint32_t volume = data.meshVolume[instance.mesh];
+        if (volume != kNoVolume) {
+            sceneBox.extend(instanceWorldBox(data.atlas.volumes[volume], instance.transform));
+        }
+    }
+    data.global = globalGridFor(sceneBox, settings.globalResolution, settings.globalPadding,
+                                settings.globalMaxDistanceVoxels);
+    for (uint32_t i = 0; i < scene.instances.size(); ++i) {
+        const scene::Instance& instance = scene.instances[i];
+        const uint32_t volume = data.meshVolume[instance.mesh];
+        if (volume != kNoVolume) {
+            data.instances.push_back(makeInstanceDesc(data.atlas.volumes[volume], volume, instance.transform,
+                                                      instance.mesh, i, data.global.voxelSize));
+        }
+    }
+    return data;
+}
+
+} // namespace lumina::sdf

@@ -1,0 +1,177 @@
+#ifndef LUMINA_SDF_FAR_FIELD_HLSLI
+#define LUMINA_SDF_FAR_FIELD_HLSLI
+// Far-field tracing through the global SDF (RG32F: distance in world units, truncated to
+// +-maxDistance; nearest instance id as a float): sphere tracing, and cone tracing that also
+// estimates how much of the cone was blocked.
+//
+// Samples are trilinear from eight Loads, not the hardware filter: filtering 32-bit float
+// textures is an optional feature, the G channel (ids) must never be filtered, and exact
+// weights keep the GPU within rounding of the CPU reference (composeGlobalSdf).
+//
+// The includer names its resources first:
+//
+//   ConstantBuffer<SdfSceneInfo> gSdfScene : register(b0);
+//   StructuredBuffer<SdfInstanceDesc> gSdfInstances : register(t2);
+//   Texture3D<float2> gGlobalSdf : register(t5);
+//   #define LUMINA_SDF_SCENE gSdfScene
+//   #define LUMINA_SDF_INSTANCE(i) gSdfInstances[i]
+//   #define LUMINA_SDF_GLOBAL gGlobalSdf
+//   #include "common/sdf_far_field.hlsli"
+#include "ray_box.hlsli"
+#include "sdf_tracing.hlsli"
+
+#if !defined(LUMINA_SDF_SCENE) || !defined(LUMINA_SDF_INSTANCE) || !defined(LUMINA_SDF_GLOBAL)
+#error "define LUMINA_SDF_SCENE, LUMINA_SDF_INSTANCE and LUMINA_SDF_GLOBAL before including sdf_far_field.hlsli"
+#endif
+
+float sdfGlobalTexel(int3 voxel) {
+    return LUMINA_SDF_GLOBAL.Load(int4(voxel, 0)).x;
+}
+
+// Signed distance in world units at a world point. Outside the grid: a lower bound,
+// sqrt(d^2 + s^2), d the distance to the grid box and s the sample at its nearest point.
+float sdfSampleGlobal(float3 p) {
+    float3 boxMin = LUMINA_SDF_SCENE.globalMinAndVoxelSize.xyz;
+    float3 boxMax = LUMINA_SDF_SCENE.globalMaxAndMaxDistance.xyz;
+    float invVoxel = 1.0f / LUMINA_SDF_SCENE.globalMinAndVoxelSize.w;
+    int3 last = int3(LUMINA_SDF_SCENE.globalDims.xyz) - 1;
+    float3 inBox = clamp(p, boxMin, boxMax);
+    float3 local = clamp((inBox - boxMin) * invVoxel, float3(0.5f, 0.5f, 0.5f),
+                         float3(LUMINA_SDF_SCENE.globalDims.xyz) - 0.5f) -
+                   0.5f;
+    int3 base = min(int3(local), last);
+    int3 next = min(base + 1, last);
+    float3 f = local - float3(base);
+    float c00 = lerp(sdfGlobalTexel(int3(base.x, base.y, base.z)), sdfGlobalTexel(int3(next.x, base.y, base.z)), f.x);
+    float c10 = lerp(sdfGlobalTexel(int3(base.x, next.y, base.z)), sdfGlobalTexel(int3(next.x, next.y, base.z)), f.x);
+    float c01 = lerp(sdfGlobalTexel(int3(base.x, base.y, next.z)), sdfGlobalTexel(int3(next.x, base.y, next.z)), f.x);
+    float c11 = lerp(sdfGlobalTexel(int3(base.x, next.y, next.z)), sdfGlobalTexel(int3(next.x, next.y, next.z)), f.x);
+    float sample = lerp(lerp(c00, c10, f.y), lerp(c01, c11, f.y), f.z);
+    float3 outside = p - inBox;
+    float outsideSquared = dot(outside, outside);
+    if (outsideSquared > 0.0f) {
+        float atBox = max(sample, 0.0f);
+        return sqrt(outsideSquared + atBox * atBox);
+    }
+    return sample;
+}
+
+// The instance the global SDF names at the voxel holding p: LUMINA_SDF_NO_HIT where nothing
+// lies within the truncation distance.
+uint sdfGlobalInstanceAt(float3 p) {
+    float invVoxel = 1.0f / LUMINA_SDF_SCENE.globalMinAndVoxelSize.w;
+    int3 last = int3(LUMINA_SDF_SCENE.globalDims.xyz) - 1;
+    int3 voxel = clamp(int3(floor((p - LUMINA_SDF_SCENE.globalMinAndVoxelSize.xyz) * invVoxel)), int3(0, 0, 0), last);
+    float id = LUMINA_SDF_GLOBAL.Load(int4(voxel, 0)).y;
+    return id >= 0.0f ? uint(id) : LUMINA_SDF_NO_HIT;
+}
+
+float3 sdfGlobalNormal(float3 p) {
+    float h = LUMINA_SDF_GRADIENT_STEP_VOXELS * LUMINA_SDF_SCENE.globalMinAndVoxelSize.w;
+    float3 g;
+    g.x = sdfSampleGlobal(p + float3(h, 0.0f, 0.0f)) - sdfSampleGlobal(p - float3(h, 0.0f, 0.0f));
+    g.y = sdfSampleGlobal(p + float3(0.0f, h, 0.0f)) - sdfSampleGlobal(p - float3(0.0f, h, 0.0f));
+    g.z = sdfSampleGlobal(p + float3(0.0f, 0.0f, h)) - sdfSampleGlobal(p - float3(0.0f, 0.0f, h));
+    float len = length(g);
+    return len > 0.0f ? g / len : float3(0.0f, 0.0f, 0.0f);
+}
+
+SdfHit sdfGlobalHit(float3 origin, float3 direction, float t, uint steps, float occlusion) {
+    SdfHit hit;
+    float3 p = origin + t * direction;
+    hit.positionAndT = float4(p, t);
+    hit.normalAndCoverage = float4(sdfGlobalNormal(p), occlusion);
+    uint instance = sdfGlobalInstanceAt(p);
+    hit.ids = uint4(LUMINA_SDF_NO_HIT, LUMINA_SDF_NO_HIT, 0u, steps);
+    if (instance != LUMINA_SDF_NO_HIT) {
+        SdfInstanceDesc desc = LUMINA_SDF_INSTANCE(instance);
+        hit.ids.x = desc.ids.z;
+        hit.ids.y = desc.ids.y;
+    }
+    return hit;
+}
+
+// The part [tStart, tEnd] of [tMin, maxDistance] inside the grid box; tStart > tEnd when none.
+float2 sdfGlobalSegment(float3 origin, float3 direction, float tMin, float maxDistance) {
+    float2 range = boxEntryExit(origin, safeReciprocal3(direction), LUMINA_SDF_SCENE.globalMinAndVoxelSize.xyz,
+                                LUMINA_SDF_SCENE.globalMaxAndMaxDistance.xyz);
+    return float2(max(range.x, tMin), min(range.y, maxDistance));
+}
+
+// Sphere tracing of the global SDF; a hit once the distance falls below
+// params.hitThresholdVoxels global voxels, moved on to the zero crossing (sdfRefineHit). Normals from the global SDF's gradient; ids from
+// the voxel the hit lies in.
+SdfHit sdfTraceGlobal(float3 origin, float3 direction, float tMin, SdfTraceParams params) {
+    float2 segment = sdfGlobalSegment(origin, direction, tMin, params.maxDistance);
+    float t = segment.x;
+    if (!(t <= segment.y)) {
+        return sdfMiss(origin, direction, params.maxDistance, 0u);
+    }
+    float voxel = LUMINA_SDF_SCENE.globalMinAndVoxelSize.w;
+    float threshold = params.hitThresholdVoxels * voxel;
+    float minStep = params.minStepVoxels * voxel;
+    float previousT = -1.0f;
+    float previousDistance = 0.0f;
+    for (uint step = 0u; step < params.maxSteps; ++step) {
+        float distance = sdfSampleGlobal(origin + t * direction);
+        if (distance < threshold) {
+            // Every surface of the global SDF has a zero crossing (open ones their shell).
+            if (previousT >= 0.0f) {
+                float refined = min(sdfRefineHit(previousT, previousDistance, t, distance, voxel), segment.y);
+                if (refined > t && abs(sdfSampleGlobal(origin + refined * direction)) <= distance) {
+                    t = refined;
+                }
+            }
+            return sdfGlobalHit(origin, direction, t, step + 1u, 0.0f);
+        }
+        previousT = t;
+        previousDistance = distance;
+        t += max(distance, minStep);
+        if (t > segment.y) {
+            return sdfMiss(origin, direction, params.maxDistance, step + 1u);
+        }
+    }
+    return sdfMiss(origin, direction, params.maxDistance, params.maxSteps);
+}
+
+// Cone tracing of the global SDF: a cone of half-angle atan(tanHalfAngle) around the ray.
+// Hit once the distance falls below the cone's radius t * tanHalfAngle (or the hit
+// threshold, whichever is larger). normalAndCoverage.w estimates the occlusion,
+// 1 - min over the steps of saturate(distance / radius): 0 when nothing came near the cone,
+// towards 1 as surfaces fill it (the estimate of soft-shadow cone tracing). A hit reports
+// the occlusion at that point too, so a grazing hit is not a full block.
+SdfHit sdfConeTraceGlobal(float3 origin, float3 direction, float tMin, float tanHalfAngle, SdfTraceParams params) {
+    float2 segment = sdfGlobalSegment(origin, direction, tMin, params.maxDistance);
+    float t = segment.x;
+    if (!(t <= segment.y)) {
+        return sdfMiss(origin, direction, params.maxDistance, 0u);
+    }
+    float voxel = LUMINA_SDF_SCENE.globalMinAndVoxelSize.w;
+    float threshold = params.hitThresholdVoxels * voxel;
+    float minStep = params.minStepVoxels * voxel;
+    float visibility = 1.0f;
+    for (uint step = 0u; step < params.maxSteps; ++step) {
+        float distance = sdfSampleGlobal(origin + t * direction);
+        float radius = t * tanHalfAngle;
+        if (radius > 0.0f) {
+            visibility = min(visibility, saturate(distance / radius));
+        }
+        if (distance < max(threshold, radius)) {
+            if (distance < threshold) {
+                visibility = 0.0f;
+            }
+            return sdfGlobalHit(origin, direction, t, step + 1u, 1.0f - visibility);
+        }
+        t += max(distance, minStep);
+        if (t > segment.y) {
+            SdfHit miss = sdfMiss(origin, direction, params.maxDistance, step + 1u);
+            miss.normalAndCoverage.w = 1.0f - visibility;
+            return miss;
+        }
+    }
+    SdfHit miss = sdfMiss(origin, direction, params.maxDistance, params.maxSteps);
+    miss.normalAndCoverage.w = 1.0f - visibility;
+    return miss;
+}
+
+#endif

@@ -1,0 +1,65 @@
+// lumina-kernel: cs main
+// Composes bricks of the global SDF from the mesh SDFs under each instance's transform: the
+// GPU twin of composeGlobalSdf (gi/sdf/global_sdf.cpp), same culling, same order, same
+// clamps, same shells around open volumes (SdfInstanceDesc::worldMax.w). One 4x4x4 group per brick of the list; each brick carries the instances that can
+// reach it (gi/sdf/global_sdf_bricks.h), ascending, so the result never depends on which
+// bricks a dispatch holds.
+#include "common/bindings.hlsli"
+#include "common/sdf_scene_shared.h"
+#include "common/sdf_shared.h"
+
+LUMINA_PUSH_CONSTANTS(GlobalSdfComposeConstants, gConstants);
+ConstantBuffer<SdfSceneInfo> gSdfScene : register(b0);
+Texture3D<float> gSdfAtlas : register(t0);
+StructuredBuffer<SdfVolumeDesc> gSdfVolumes : register(t1);
+StructuredBuffer<SdfInstanceDesc> gSdfInstances : register(t2);
+StructuredBuffer<GlobalSdfBrick> gBricks : register(t3);
+StructuredBuffer<uint> gBrickInstances : register(t4);
+SamplerState gLinearClamp : register(s0);
+LUMINA_UAV_FORMAT(rg32f) RWTexture3D<float2> gGlobalSdf : register(u0);
+
+#define LUMINA_SDF_ATLAS gSdfAtlas
+#define LUMINA_SDF_SAMPLER gLinearClamp
+#include "common/sdf_sampling.hlsli"
+#include "common/sdf_tracing.hlsli"
+
+static const uint kBrickCoordBits = 10u;
+static const uint kBrickCoordMask = (1u << kBrickCoordBits) - 1u;
+
+[numthreads(LUMINA_SDF_BRICK_SIZE, LUMINA_SDF_BRICK_SIZE, LUMINA_SDF_BRICK_SIZE)] void main(
+    uint3 groupId : SV_GroupID, uint3 threadId : SV_GroupThreadID) {
+    uint brickIndex = groupId.y * gConstants.groupsPerRow + groupId.x;
+    if (brickIndex >= gConstants.brickCount) {
+        return;
+    }
+    uint4 brick = gBricks[brickIndex].coordAndInstances;
+    uint3 brickCoord = uint3(brick.x & kBrickCoordMask, (brick.x >> kBrickCoordBits) & kBrickCoordMask,
+                             brick.x >> (2u * kBrickCoordBits));
+    uint3 voxel = brickCoord * LUMINA_SDF_BRICK_SIZE + threadId;
+    if (any(voxel >= gSdfScene.globalDims.xyz)) {
+        return;
+    }
+    float voxelSize = gSdfScene.globalMinAndVoxelSize.w;
+    float maxDistance = gSdfScene.globalMaxAndMaxDistance.w;
+    float3 p = gSdfScene.globalMinAndVoxelSize.xyz + (float3(voxel) + 0.5f) * voxelSize;
+    float best = maxDistance;
+    float bestInstance = LUMINA_SDF_GLOBAL_NO_INSTANCE;
+    for (uint i = brick.y; i < brick.y + brick.z; ++i) {
+        uint index = gBrickInstances[i];
+        SdfInstanceDesc instance = gSdfInstances[index];
+        SdfVolumeDesc volume = gSdfVolumes[instance.ids.x];
+        float shell = instance.worldMax.w;
+        // Everything of the instance lies in its world box: it cannot be nearer.
+        if (sdfBoxDistance(p, instance.worldMinAndScale.xyz, instance.worldMax.xyz) - shell >= best) {
+            continue;
+        }
+        float d = sdfSampleVolume(volume, gSdfScene.invAtlasDims.xyz, sdfWorldToObject(instance, p)) *
+                      instance.worldMinAndScale.w -
+                  shell;
+        if (d < best) {
+            best = d;
+            bestInstance = float(index);
+        }
+    }
+    gGlobalSdf[voxel] = float2(max(best, -maxDistance), bestInstance);
+}
