@@ -1,0 +1,169 @@
+#include "gi/pathtracer/path_tracer.h"
+
+#include "gi/core/camera.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace lumina::gi {
+
+namespace {
+
+constexpr uint32_t kGroupSize = 8; // numthreads of pathtracer/path_trace
+// The relMSE regulariser of docs/measurement.md: relMSE = mean((x - r)^2 / (r^2 + 0.01)).
+constexpr double kRelativeErrorEpsilon = 0.01;
+
+rhi::BufferHandle pixelBuffer(rhi::IDevice& device, uint64_t count, uint32_t stride, const char* name) {
+    return device.createBuffer({.size = count * stride,
+                                .structStride = stride,
+                                .usage = rhi::BufferUsage::Structured | rhi::BufferUsage::Storage,
+                                .debugName = name});
+}
+
+} // namespace
+
+double relativeStandardError(std::span<const gpu::float4> mean, std::span<const gpu::float4> m2,
+                             uint32_t samples) {
+    if (samples < 2 || mean.empty()) {
+        return std::numeric_limits<double>::infinity();
+    }
+    const double n = samples;
+    double sum = 0.0;
+    for (size_t i = 0; i < mean.size(); ++i) {
+        const double varianceOfMean = std::max(double(m2[i].w), 0.0) / (n * (n - 1.0));
+        const double l = mean[i].w;
+        sum += std::sqrt(varianceOfMean / (l * l + kRelativeErrorEpsilon));
+    }
+    return sum / double(mean.size());
+}
+
+PathTracer::PathTracer(rhi::IDevice& device, const PathTracerScene& traced, const scene::Scene& scene,
+                       const PathTracerSettings& settings)
+    : device_(device), traced_(traced), settings_(settings) {
+    if (settings_.width == 0 || settings_.height == 0) {
+        settings_.width = scene.image.width;
+        settings_.height = scene.image.height;
+    }
+    if (settings_.width == 0 || settings_.height == 0 || pixelCount() > (uint64_t(1) << 28)) {
+        throw rhi::Error("path tracer: image size " + std::to_string(settings_.width) + "x" +
+                         std::to_string(settings_.height) + " is empty or too large");
+    }
+    gpu::PathTraceConstants constants{};
+    constants.camera = makeGpuCamera(scene.camera, settings_.width, settings_.height);
+    constants.sky = gpu::float4(scene.sky, 0.0f);
+    const uint32_t flags =
+        (settings_.jitter ? LUMINA_PT_FLAG_JITTER : 0u) | (settings_.aovs ? LUMINA_PT_FLAG_AOVS : 0u);
+    constants.counts =
+        gpu::uint4(traced.stats().lights, traced.stats().emitters, settings_.maxBounces, flags);
+    constants.image =
+        gpu::uint4(settings_.width, settings_.height, settings_.seed, settings_.rouletteStartBounce);
+    constants_ = rhi::createBufferWithData(device,
+                                           {.size = sizeof(constants),
+                                            .usage = rhi::BufferUsage::Constant,
+                                            .debugName = "path tracer: constants"},
+                                           &constants, sizeof(constants));
+
+    const uint64_t pixels = pixelCount();
+    mean_ = pixelBuffer(device, pixels, sizeof(gpu::float4), "path tracer: mean");
+    m2_ = pixelBuffer(device, pixels, sizeof(gpu::float4), "path tracer: squared deviations");
+    counts_ = pixelBuffer(device, pixels, sizeof(gpu::uint2), "path tracer: counts");
+    aovs_ = pixelBuffer(device, settings_.aovs ? pixels : 1, sizeof(gpu::PtPixelAovs), "path tracer: aovs");
+}
+
+void PathTracer::recordSamples(FrameContext& frame, uint32_t count) {
+    const uint32_t width = settings_.width;
+    const uint32_t height = settings_.height;
+    // Bands of whole rows, a multiple of the group height, of at most maxPixelsPerDispatch.
+    uint32_t bandRows = std::max(settings_.maxPixelsPerDispatch / width, 1u);
+    bandRows = std::max(bandRows / kGroupSize * kGroupSize, kGroupSize);
+    const GpuScene& scene = traced_.gpuScene();
+    for (uint32_t s = 0; s < count; ++s) {
+        for (uint32_t y = 0; y < height; y += bandRows) {
+            frame.compute("path tracer: sample", "pathtracer/path_trace")
+                .constantBuffer(0, constants_)
+                .read(0, traced_.bvhNodes)
+                .read(1, traced_.bvhTriangles)
+                .read(2, traced_.triangles)
+                .read(3, scene.vertices)
+                .read(4, scene.indices)
+                .read(5, scene.instances)
+                .read(6, scene.materials)
+                .read(7, traced_.emitters)
+                .read(8, traced_.emitterAlias)
+                .read(9, traced_.lights)
+                .read(10, scene.textures)
+                .sampler(0, scene.materialSampler)
+                .write(0, mean_)
+                .write(1, m2_)
+                .write(2, counts_)
+                .write(3, aovs_)
+                .constants(gpu::PathTracePassConstants{samples_, 0u, y, 0u})
+                .dispatchThreads(width, std::min(bandRows, height - y), {kGroupSize, kGroupSize});
+        }
+        ++samples_;
+    }
+}
+
+double PathTracer::meanRelativeStandardError() const {
+    const auto mean = rhi::readBufferAs<gpu::float4>(device_, *mean_);
+    const auto m2 = rhi::readBufferAs<gpu::float4>(device_, *m2_);
+    return relativeStandardError(mean, m2, samples_);
+}
+
+PathTracerResult PathTracer::readResult() const {
+    const auto mean = rhi::readBufferAs<gpu::float4>(device_, *mean_);
+    const auto m2 = rhi::readBufferAs<gpu::float4>(device_, *m2_);
+    const auto counts = rhi::readBufferAs<gpu::uint2>(device_, *counts_);
+
+    PathTracerResult result;
+    result.samples = samples_;
+    std::vector<std::string> names = {"R", "G", "B", "variance.R", "variance.G", "variance.B"};
+    if (settings_.aovs) {
+        for (const char* layer : {"albedo", "direct", "indirect"}) {
+            for (const char* c : {".R", ".G", ".B"}) {
+                names.push_back(std::string(layer) + c);
+            }
+        }
+        for (const char* c : {"normal.X", "normal.Y", "normal.Z"}) {
+            names.push_back(c);
+        }
+    }
+    result.image = image::Image(settings_.width, settings_.height, names);
+    const double n = samples_;
+    const double varianceScale = samples_ > 1 ? 1.0 / (n * (n - 1.0)) : 0.0;
+    auto plane = [&](const char* name) { return result.image.channel(name); };
+    std::span<float> r = plane("R"), g = plane("G"), b = plane("B");
+    std::span<float> vr = plane("variance.R"), vg = plane("variance.G"), vb = plane("variance.B");
+    for (size_t i = 0; i < mean.size() && i < r.size(); ++i) {
+        r[i] = mean[i].x;
+        g[i] = mean[i].y;
+        b[i] = mean[i].z;
+        vr[i] = float(std::max(double(m2[i].x), 0.0) * varianceScale);
+        vg[i] = float(std::max(double(m2[i].y), 0.0) * varianceScale);
+        vb[i] = float(std::max(double(m2[i].z), 0.0) * varianceScale);
+        result.rays += counts[i].x;
+        result.nonFiniteSamples += counts[i].y;
+    }
+    if (settings_.aovs) {
+        const auto aovs = rhi::readBufferAs<gpu::PtPixelAovs>(device_, *aovs_);
+        auto copy3 = [&](const char* x, const char* y, const char* z, gpu::float4 gpu::PtPixelAovs::*member) {
+            std::span<float> px = plane(x), py = plane(y), pz = plane(z);
+            for (size_t i = 0; i < aovs.size() && i < px.size(); ++i) {
+                const gpu::float4& v = aovs[i].*member;
+                px[i] = v.x;
+                py[i] = v.y;
+                pz[i] = v.z;
+            }
+        };
+        copy3("albedo.R", "albedo.G", "albedo.B", &gpu::PtPixelAovs::albedo);
+        copy3("normal.X", "normal.Y", "normal.Z", &gpu::PtPixelAovs::normal);
+        copy3("direct.R", "direct.G", "direct.B", &gpu::PtPixelAovs::direct);
+        copy3("indirect.R", "indirect.G", "indirect.B", &gpu::PtPixelAovs::indirect);
+    }
+    result.meanRelativeStandardError = relativeStandardError(mean, m2, samples_);
+    return result;
+}
+
+} // namespace lumina::gi

@@ -1,0 +1,60 @@
+# Smoke test of `lumina reference` end to end: cmake -DLUMINA=... -DDIR=... -P this.
+# A tiny render with AOVs and a PNG, a --target-error stop, and bad input (exit codes 1 and 2).
+foreach(var LUMINA DIR)
+  if(NOT DEFINED ${var})
+    message(FATAL_ERROR "reference_cli_smoke: -D${var}= is required")
+  endif()
+endforeach()
+file(REMOVE_RECURSE "${DIR}")
+file(MAKE_DIRECTORY "${DIR}")
+
+# run(<expected exit code> <name> args...): runs lumina, leaves its output in OUT and ERR.
+function(run expected name)
+  execute_process(COMMAND "${LUMINA}" ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  message(STATUS "[${name}] lumina ${ARGN} -> ${rc}\n${out}${err}")
+  if(NOT rc EQUAL expected)
+    message(FATAL_ERROR "[${name}] exit code ${rc}, expected ${expected}")
+  endif()
+  set(OUT "${out}" PARENT_SCOPE)
+  set(ERR "${err}" PARENT_SCOPE)
+endfunction()
+
+function(expect_match name text regex)
+  if(NOT text MATCHES "${regex}")
+    message(FATAL_ERROR "[${name}] output does not match '${regex}'")
+  endif()
+endfunction()
+
+set(num "[0-9]+(\\.[0-9]+)?(e[-+][0-9]+)?")
+
+# 1. A render: figures printed, progress on stderr, the EXR (with AOV channels) and the PNG written.
+run(0 render reference cornell_box --size 16x16 --spp 4 --aovs --validation
+    --out "${DIR}/ref.exr" --png "${DIR}/ref.png")
+expect_match(render "${OUT}" "cornell_box: 16x16, 4 spp in")
+expect_match(render "${OUT}" "${num} samples/s, ${num} rays/s")
+expect_match(render "${ERR}" "4/4 spp")
+foreach(file ref.exr ref.png)
+  if(NOT EXISTS "${DIR}/${file}")
+    message(FATAL_ERROR "[render] ${file} was not written")
+  endif()
+endforeach()
+file(READ "${DIR}/ref.exr" header LIMIT 4096 HEX)
+foreach(channel R variance.R albedo.R normal.X direct.R indirect.R)
+  string(HEX "${channel}" hexName)
+  if(NOT header MATCHES "00${hexName}00")
+    message(FATAL_ERROR "[render] channel ${channel} missing from ref.exr")
+  endif()
+endforeach()
+
+# 2. --target-error stops early: far fewer than the cap.
+run(0 target reference furnace_0.5 --size 16x16 --target-error 0.2 --out "${DIR}/target.exr")
+expect_match(target "${OUT}" "16x16, ([0-9]|[1-9][0-9]) spp in")
+
+# 3. Bad input: a clear message and a non-zero exit code.
+run(1 unknown-scene reference no_such_scene --out "${DIR}/x.exr")
+expect_match(unknown-scene "${ERR}" "no_such_scene")
+run(2 zero-spp reference cornell_box --spp 0)
+run(2 bad-target reference cornell_box --target-error nope)
+run(2 no-scene reference)
+run(2 bad-out-dir reference cornell_box --out "${DIR}/missing/dir/x.exr")
+expect_match(bad-out-dir "${ERR}" "no directory")
