@@ -4,10 +4,24 @@ namespace lumina::app {
 
 // One line per subcommand; each is defined in its own file beside this one.
 Command gpuCheckCommand();
+#if LUMINA_HAS_GI // commands that need gi/ libraries; the MinGW cross build has none
+Command compareCommand();
+Command infoCommand();
+Command sdfCommand();
+Command referenceCommand();
+Command renderCommand();
+#endif
 
 const std::vector<Command>& allCommands() {
     static const std::vector<Command> commands = {
         gpuCheckCommand(),
+#if LUMINA_HAS_GI
+        compareCommand(),
+        infoCommand(),
+        sdfCommand(),
+        referenceCommand(),
+        renderCommand(),
+#endif
     };
     return commands;
 }

@@ -1,0 +1,148 @@
+#include "gi/deferred/deferred_renderer.h"
+
+#include "gi/core/camera.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+
+namespace lumina::gi {
+
+namespace {
+
+DeferredSettings resolved(DeferredSettings settings, const scene::Scene& scene) {
+    if (settings.width == 0 || settings.height == 0) {
+        settings.width = scene.image.width;
+        settings.height = scene.image.height;
+    }
+    if (!settings.log) {
+        settings.log = [](std::string_view line) { std::clog << "deferred: " << line << '\n'; };
+    }
+    return settings;
+}
+
+rhi::TextureHandle createStorageTarget(rhi::IDevice& device, rhi::Format format, uint32_t width,
+                                       uint32_t height, const char* name) {
+    return device.createTexture({.format = format,
+                                 .width = width,
+                                 .height = height,
+                                 .usage = rhi::TextureUsage::Storage | rhi::TextureUsage::Sampled,
+                                 .debugName = name});
+}
+
+rhi::BufferHandle createConstantBuffer(rhi::IDevice& device, uint64_t size, const char* name) {
+    return device.createBuffer({.size = size, .usage = rhi::BufferUsage::Constant, .debugName = name});
+}
+
+} // namespace
+
+DeferredRenderer::DeferredRenderer(rhi::IDevice& device, const scene::Scene& scene, const GpuScene& gpuScene,
+                                   DeferredSettings settings)
+    : device_(device), scene_(scene), settings_(resolved(std::move(settings), scene)), camera_(scene.camera),
+      bounds_(scene.worldBounds()), gbufferPass_(scene, gpuScene),
+      sunShadow_(device, gpuScene, settings_.sunShadowSize),
+      pointShadow_(device, gpuScene, settings_.pointShadowSize), composite_(device) {
+    const uint32_t w = settings_.width, h = settings_.height;
+    gbuffer_ = GBuffer::create(device, w, h);
+    direct_ = createStorageTarget(device, rhi::Format::RGBA16_FLOAT, w, h, "direct light");
+    hdr_ = createStorageTarget(device, rhi::Format::RGBA16_FLOAT, w, h, "hdr");
+    ldr_ = createStorageTarget(device, rhi::Format::RGBA8_UNORM, w, h, "ldr");
+    frameConstants_ =
+        createConstantBuffer(device, sizeof(gpu::DeferredFrameConstants), "deferred frame constants");
+    shadowConstants_ =
+        createConstantBuffer(device, sizeof(gpu::DeferredShadowConstants), "deferred shadow constants");
+    setLights(scene.lights);
+}
+
+void DeferredRenderer::setLights(std::vector<scene::Light> lights) {
+    sceneLights_ = std::move(lights);
+    lights_ = setupLights(sceneLights_);
+    for (const std::string& line : lights_.unshadowed) {
+        settings_.log(line);
+    }
+    lightsDirty_ = true;
+}
+
+void DeferredRenderer::geometryChanged(const scene::Bounds& bounds) {
+    bounds_ = bounds;
+    ++geometryVersion_;
+}
+
+rhi::TextureHandle DeferredRenderer::sunShadowMap() const {
+    return sunShadow_.valid() ? sunShadow_.map() : nullptr;
+}
+
+rhi::TextureHandle DeferredRenderer::pointShadowMaps() const {
+    return pointShadow_.cubeCount() > 0 ? pointShadow_.maps() : nullptr;
+}
+
+void DeferredRenderer::uploadConstants(rhi::ICommandList& commands, const std::optional<SunShadowFit>& sun,
+                                       const std::vector<glm::vec4>& cubes) {
+    gpu::DeferredFrameConstants frame{};
+    frame.camera = makeGpuCamera(camera_, settings_.width, settings_.height);
+    frame.sky = gpu::float4(scene_.sky, 0.0f);
+    frame.counts = gpu::uint4(uint32_t(lights_.lights.size()), settings_.width, settings_.height, 0u);
+    commands.writeBuffer(*frameConstants_, &frame, sizeof(frame));
+
+    gpu::DeferredShadowConstants shadow{};
+    if (sun) {
+        for (int r = 0; r < 4; ++r) {
+            shadow.sunViewProjRows[r] = sun->viewProjRows[r];
+        }
+        const auto size = float(settings_.sunShadowSize);
+        shadow.sunMap = gpu::float4(size, 1.0f / size, sun->texelWorld, sun->depthRange);
+    }
+    const auto faceSize = float(settings_.pointShadowSize);
+    shadow.pointMap =
+        gpu::float4(faceSize, 1.0f / faceSize, LUMINA_POINT_SHADOW_NEAR_FRACTION, float(cubes.size()));
+    std::copy(cubes.begin(), cubes.end(), shadow.pointLights);
+    commands.writeBuffer(*shadowConstants_, &shadow, sizeof(shadow));
+
+    if (lightsDirty_) {
+        const auto count = std::max<uint32_t>(1, uint32_t(lights_.lights.size()));
+        if (count > lightCapacity_) {
+            lightBuffer_ = device_.createBuffer({.size = count * sizeof(gpu::DeferredLight),
+                                                 .structStride = sizeof(gpu::DeferredLight),
+                                                 .usage = rhi::BufferUsage::Structured,
+                                                 .debugName = "deferred lights"});
+            lightCapacity_ = count;
+        }
+        std::vector<gpu::DeferredLight> data = lights_.lights;
+        data.resize(count); // one zero light when there are none: never read (count 0)
+        commands.writeBuffer(*lightBuffer_, data.data(), data.size() * sizeof(gpu::DeferredLight));
+        lightsDirty_ = false;
+    }
+}
+
+void DeferredRenderer::render(FrameContext& frame) {
+    std::optional<SunShadowFit> sun;
+    if (lights_.sun) {
+        sun = fitSunShadow(bounds_, sceneLights_[*lights_.sun].direction, settings_.sunShadowSize);
+    }
+    std::vector<glm::vec4> cubes;
+    for (uint32_t index : lights_.cubeLights) {
+        const scene::Light& light = sceneLights_[index];
+        cubes.emplace_back(light.position, pointShadowRange(light, bounds_));
+    }
+    uploadConstants(frame.commands(), sun, cubes);
+
+    gbufferPass_.record(frame, gbuffer_, frameConstants_);
+    sunShadow_.record(frame, sun, shadowConstants_, geometryVersion_);
+    pointShadow_.record(frame, cubes, shadowConstants_, geometryVersion_);
+    directLight_.record(frame,
+                        {.gbuffer = gbuffer_,
+                         .frameConstants = frameConstants_,
+                         .shadowConstants = shadowConstants_,
+                         .lights = lightBuffer_,
+                         .sunShadowMap = sunShadow_.map(),
+                         .pointShadowMaps = pointShadow_.maps()},
+                        direct_);
+    composite_.record(frame,
+                      {.direct = direct_,
+                       .indirect = indirect_,
+                       .albedo = gbuffer_.albedo,
+                       .exposureEv = settings_.exposureEv},
+                      hdr_, ldr_);
+}
+
+} // namespace lumina::gi

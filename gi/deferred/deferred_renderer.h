@@ -1,0 +1,98 @@
+#pragma once
+// The real-time frame GI plugs into (docs/deferred.md):
+//
+//   gbuffer -> sun shadow -> point shadows -> direct light -> composite (+ indirect x albedo)
+//
+// The renderer owns its targets and records one frame into a FrameContext. Shadow maps are
+// re-rendered only when their light or the geometry changes; every pass that does not run
+// says why through frame.skip(), which --timings prints.
+#include "gi/core/frame_context.h"
+#include "gi/deferred/composite_pass.h"
+#include "gi/deferred/direct_light_pass.h"
+#include "gi/deferred/gbuffer_pass.h"
+#include "gi/deferred/light_setup.h"
+#include "gi/deferred/point_shadow_pass.h"
+#include "gi/deferred/sun_shadow_pass.h"
+#include "gi/gpu_scene/gpu_scene.h"
+#include "gi/scene/scene.h"
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace lumina::gi {
+
+struct DeferredSettings {
+    uint32_t width = 0; // 0: the scene's image size
+    uint32_t height = 0;
+    uint32_t sunShadowSize = 2048;
+    uint32_t pointShadowSize = 512;
+    float exposureEv = 0.0f;
+    // Receives the renderer's notes (lights left unshadowed); default: std::clog.
+    std::function<void(std::string_view)> log;
+};
+
+class DeferredRenderer {
+public:
+    // `scene` and `gpuScene` must outlive the renderer.
+    DeferredRenderer(rhi::IDevice& device, const scene::Scene& scene, const GpuScene& gpuScene,
+                     DeferredSettings settings = {});
+
+    // Records one frame: every pass, or its skip.
+    void render(FrameContext& frame);
+
+    void setCamera(const scene::Camera& camera) { camera_ = camera; }
+    void setLights(std::vector<scene::Light> lights);
+    void setExposure(float ev) { settings_.exposureEv = ev; }
+    // Indirect light multiplied by albedo in the composite; null: none (the default).
+    void setIndirect(rhi::TextureHandle indirect) { indirect_ = std::move(indirect); }
+    // Geometry moved (within `bounds`): shadow maps re-render on the next frame.
+    void geometryChanged(const scene::Bounds& bounds);
+
+    uint32_t width() const { return settings_.width; }
+    uint32_t height() const { return settings_.height; }
+    const GBuffer& gbuffer() const { return gbuffer_; }
+    const rhi::TextureHandle& direct() const { return direct_; } // RGBA16F linear radiance
+    const rhi::TextureHandle& hdr() const { return hdr_; }       // RGBA16F, direct + indirect x albedo
+    const rhi::TextureHandle& ldr() const { return ldr_; }       // RGBA8, display-encoded sRGB
+    // Null when the scene has no sun / no shadowed point or spot light.
+    rhi::TextureHandle sunShadowMap() const;
+    rhi::TextureHandle pointShadowMaps() const;
+    uint32_t pointShadowCubes() const { return pointShadow_.cubeCount(); }
+    const LightSetup& lights() const { return lights_; }
+
+private:
+    void uploadConstants(rhi::ICommandList& commands, const std::optional<SunShadowFit>& sun,
+                         const std::vector<glm::vec4>& cubes);
+
+    rhi::IDevice& device_;
+    const scene::Scene& scene_;
+    DeferredSettings settings_;
+    scene::Camera camera_;
+    std::vector<scene::Light> sceneLights_;
+    LightSetup lights_;
+    bool lightsDirty_ = true;
+    scene::Bounds bounds_;
+    uint64_t geometryVersion_ = 0;
+    rhi::TextureHandle indirect_;
+
+    GBuffer gbuffer_;
+    rhi::TextureHandle direct_;
+    rhi::TextureHandle hdr_;
+    rhi::TextureHandle ldr_;
+    rhi::BufferHandle frameConstants_;
+    rhi::BufferHandle shadowConstants_;
+    rhi::BufferHandle lightBuffer_;
+    uint32_t lightCapacity_ = 0;
+
+    GBufferPass gbufferPass_;
+    SunShadowPass sunShadow_;
+    PointShadowPass pointShadow_;
+    DirectLightPass directLight_;
+    CompositePass composite_;
+};
+
+} // namespace lumina::gi

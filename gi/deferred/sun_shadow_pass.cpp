@@ -1,0 +1,57 @@
+#include "gi/deferred/sun_shadow_pass.h"
+
+namespace lumina::gi {
+
+namespace {
+
+rhi::TextureHandle createDepthMap(rhi::IDevice& device, uint32_t size, const char* name) {
+    return device.createTexture({.format = rhi::Format::D32_FLOAT,
+                                 .width = size,
+                                 .height = size,
+                                 .usage = rhi::TextureUsage::DepthStencil | rhi::TextureUsage::Sampled,
+                                 .debugName = name});
+}
+
+} // namespace
+
+SunShadowPass::SunShadowPass(rhi::IDevice& device, const GpuScene& gpuScene, uint32_t mapSize)
+    : device_(device), gpuScene_(gpuScene), mapSize_(mapSize), draws_(shadowDraws(gpuScene.draws())),
+      placeholder_(createDepthMap(device, 1, "sun shadow map (none)")) {}
+
+void SunShadowPass::record(FrameContext& frame, const std::optional<SunShadowFit>& fit,
+                           const rhi::BufferHandle& shadowConstants, uint64_t geometryVersion) {
+    if (!placeholderCleared_) {
+        frame.commands().clearDepth(*placeholder_, 1.0f);
+        placeholderCleared_ = true;
+    }
+    if (!fit) {
+        valid_ = false;
+        frame.skip("sun shadow", "no directional light");
+        return;
+    }
+    if (valid_ && fit->viewProjRows == renderedRows_ && geometryVersion == renderedGeometry_) {
+        frame.skip("sun shadow", "unchanged since frame " + std::to_string(renderedFrame_));
+        return;
+    }
+    if (!map_) {
+        map_ = createDepthMap(device_, mapSize_, "sun shadow map");
+    }
+    frame.commands().clearDepth(*map_, 1.0f);
+    RasterPipelineState state;
+    state.raster.cullMode = rhi::CullMode::None; // both faces cast (single-sided walls included)
+    state.depth = {.testEnable = true, .writeEnable = true, .compareOp = rhi::CompareOp::Less};
+    frame.raster("sun shadow", "deferred/sun_shadow.vsMain", "")
+        .state(state)
+        .constantBuffer(1, shadowConstants)
+        .read(0, gpuScene_.vertices)
+        .read(1, gpuScene_.instances)
+        .depthTarget(map_)
+        .indexBuffer(gpuScene_.indices)
+        .draw(shadowRasterDraws(draws_, 0), true);
+    valid_ = true;
+    renderedRows_ = fit->viewProjRows;
+    renderedGeometry_ = geometryVersion;
+    renderedFrame_ = frame.frameIndex();
+}
+
+} // namespace lumina::gi
