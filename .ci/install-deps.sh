@@ -11,6 +11,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-matplotlib
   assimp-testmodels
+  # The Direct3D 12 backend, cross-compiled and run under Wine (.ci/build-d3d12-mingw.sh)
+  g++-mingw-w64-x86-64 directx-headers-dev googletest wine64 xvfb xauth
 )
 
 if [ "$(id -u)" -eq 0 ]; then
