@@ -2,6 +2,7 @@
 // direct light, composite) rendered on the GPU and written as a PNG, optionally with the linear
 // HDR result as EXR, every intermediate buffer, and the GPU time of each pass.
 #include "app/command.h"
+#include "gi/core/build_info.h"
 #include "gi/core/frame_context.h"
 #include "gi/core/pipeline_cache.h"
 #include "gi/core/timing_table.h"
@@ -92,7 +93,8 @@ int runRender(const ParsedArgs& args) {
         table.print(std::cout);
     }
     if (args.has("timings-json")) {
-        table.writeJson(args.get("timings-json"), {{"device", device->adapter().name},
+        table.writeJson(args.get("timings-json"), {{"commit", std::string(gi::gitCommit())},
+                                                   {"device", device->adapter().name},
                                                    {"driver", device->adapter().driver},
                                                    {"api", std::string(rhi::apiName(device->api()))},
                                                    {"scene", loaded.name},

@@ -1,5 +1,7 @@
 #include "gi/sdf/sdf_cache.h"
 
+#include "gi/core/cache_dir.h"
+
 #include <atomic>
 #include <bit>
 #include <chrono>
@@ -48,11 +50,6 @@ private:
     size_t offset_ = 0;
 };
 
-std::filesystem::path envPath(const char* name) {
-    const char* value = std::getenv(name);
-    return value != nullptr && value[0] != '\0' ? std::filesystem::path(value) : std::filesystem::path();
-}
-
 } // namespace
 
 uint64_t fnv1a64(const void* bytes, size_t size, uint64_t hash) {
@@ -82,21 +79,7 @@ std::string SdfCacheReport::summary(const MeshSdf& sdf) const {
 }
 
 std::filesystem::path SdfCache::defaultDirectory() {
-    if (auto dir = envPath("LUMINA_CACHE_DIR"); !dir.empty()) {
-        return dir / "sdf";
-    }
-    if (auto dir = envPath("XDG_CACHE_HOME"); !dir.empty()) {
-        return dir / "lumina" / "sdf";
-    }
-#ifdef _WIN32
-    if (auto dir = envPath("LOCALAPPDATA"); !dir.empty()) {
-        return dir / "lumina" / "sdf";
-    }
-#endif
-    if (auto dir = envPath("HOME"); !dir.empty()) {
-        return dir / ".cache" / "lumina" / "sdf";
-    }
-    return std::filesystem::temp_directory_path() / "lumina" / "sdf";
+    return gi::cacheRoot() / "sdf";
 }
 
 uint64_t SdfCache::key(std::span<const glm::vec3> positions, std::span<const uint32_t> indices,

@@ -1,0 +1,269 @@
+// `lumina bench`: the run-time-against-error matrix. For every scene it renders (or reuses) a
+// path-traced reference, then runs each technique at each quality preset for a fixed number
+// of frames, timing every pass on the GPU and measuring the image against the reference at
+// frame 1 and after convergence. Writes bench.csv, bench.json and a log-log plot of error
+// against frame time (scripts/plot_bench.py, python3-matplotlib). docs/measurement.md.
+#include "app/command.h"
+#include "gi/bench/bench_report.h"
+#include "gi/bench/reference_cache.h"
+#include "gi/bench/technique_runs.h"
+#include "gi/core/build_info.h"
+#include "gi/core/pipeline_cache.h"
+#include "gi/scene/builtin_scenes.h"
+#include "gi/scene/scene_loader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace lumina::app {
+
+namespace {
+
+constexpr const char* kDefaultScenes = "cornell_box,cornell_box_point,open_top_box";
+constexpr const char* kDefaultTechniques = "direct,pathtracer";
+constexpr const char* kDefaultPresets = "low,medium,high";
+// The path tracer's per-frame budgets, in multiples of the direct renderer's frame time: equal
+// time and two larger budgets, so its curve of error against time has three points.
+constexpr const char* kDefaultBudgets = "1,4,16";
+constexpr uint32_t kDefaultSize = 128;
+constexpr uint32_t kDefaultFrames = 16;
+constexpr uint32_t kDefaultReferenceSpp = 256;
+// The path tracer under test: any seed but the reference's.
+constexpr uint32_t kPathTracerSeed = 1;
+
+std::vector<std::string> splitList(const std::string& flag, const std::string& text) {
+    std::vector<std::string> items;
+    std::stringstream stream(text);
+    for (std::string item; std::getline(stream, item, ',');) {
+        if (item.empty()) {
+            throw UsageError("--" + flag + ": empty item in '" + text + "'");
+        }
+        items.push_back(item);
+    }
+    if (items.empty()) {
+        throw UsageError("--" + flag + ": give at least one item");
+    }
+    return items;
+}
+
+std::string number(double value, int digits = 4) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.*g", digits, value);
+    return text;
+}
+
+void printRun(const std::string& scene, const gi::TechniqueRun& run) {
+    const gi::Checkpoint& first = run.checkpoints.front();
+    const gi::Checkpoint& last = run.checkpoints.back();
+    std::cout << "  " << scene << " / " << run.technique << " / " << run.preset;
+    if (run.samplesPerFrame) {
+        std::cout << " (" << run.samplesPerFrame << " spp/frame)";
+    }
+    std::cout << ": " << number(run.frameMs) << " ms/frame, relMSE " << number(first.relMse) << " -> "
+              << number(last.relMse) << " (frame " << run.framesToConverge << "), indirect relMSE "
+              << number(last.indirectRelMse) << ", FLIP " << number(last.flip) << ", "
+              << number(double(run.gpuMemoryBytes) / (1024.0 * 1024.0), 3) << " MiB\n";
+}
+
+// scripts/plot_bench.py from the source tree the built-in scenes come from.
+std::filesystem::path plotScript() {
+    if (const auto scenes = scene::findScenesDirectory()) {
+        return scenes->parent_path() / "scripts" / "plot_bench.py";
+    }
+    return {};
+}
+
+// Debian's python3 first: python3-matplotlib is installed for it, whatever else PATH holds.
+std::string pythonInterpreter() {
+    if (const char* chosen = std::getenv("LUMINA_PYTHON"); chosen && *chosen) {
+        return chosen;
+    }
+    return std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+}
+
+bool makePlot(const std::filesystem::path& csv, const std::filesystem::path& png) {
+    const std::filesystem::path script = plotScript();
+    if (script.empty() || !std::filesystem::exists(script)) {
+        std::cerr << "bench: note: no plot, scripts/plot_bench.py not found (set LUMINA_SOURCE_DIR)\n";
+        return false;
+    }
+    const std::string command = "\"" + pythonInterpreter() + "\" \"" + script.string() + "\" \"" +
+                                csv.string() + "\" \"" + png.string() + "\"";
+    if (std::system(command.c_str()) != 0) {
+        std::cerr << "bench: note: the plot failed (it needs python3-matplotlib; LUMINA_PYTHON picks the "
+                     "interpreter): "
+                  << command << '\n';
+        return false;
+    }
+    return true;
+}
+
+int runBench(const ParsedArgs& args) {
+    if (!args.positional.empty()) {
+        throw UsageError("bench takes no positional arguments; name scenes with --scenes");
+    }
+    const std::vector<std::string> sceneNames = splitList("scenes", args.get("scenes", kDefaultScenes));
+    const std::vector<std::string> techniques =
+        splitList("techniques", args.get("techniques", kDefaultTechniques));
+    const std::vector<std::string> presets = splitList("presets", args.get("presets", kDefaultPresets));
+    std::vector<double> budgets;
+    for (const std::string& item : splitList("pt-budgets", args.get("pt-budgets", kDefaultBudgets))) {
+        const double budget = parseDouble("pt-budgets", item);
+        if (!(budget > 0.0 && budget <= 1e6)) {
+            throw UsageError("--pt-budgets: each budget must be in (0, 1e6], got " + item);
+        }
+        budgets.push_back(budget);
+    }
+    for (const std::string& technique : techniques) {
+        if (technique != "direct" && technique != "pathtracer") {
+            throw UsageError("--techniques: unknown technique '" + technique + "' (direct, pathtracer)");
+        }
+    }
+    for (const std::string& preset : presets) {
+        if (std::ranges::find(gi::directPresetNames(), preset) == gi::directPresetNames().end()) {
+            throw UsageError("--presets: unknown preset '" + preset + "' (low, medium, high)");
+        }
+    }
+    const uint32_t width = args.common.size ? args.common.size->width : kDefaultSize;
+    const uint32_t height = args.common.size ? args.common.size->height : kDefaultSize;
+    const uint32_t frames = args.common.frames.value_or(kDefaultFrames);
+    if (frames == 0) {
+        throw UsageError("--frames: at least one frame");
+    }
+    const auto referenceSpp = uint32_t(args.getUint("reference-spp", kDefaultReferenceSpp, 1, 1u << 20));
+    const std::filesystem::path outDir = args.common.out.empty() ? "bench" : args.common.out;
+    const std::filesystem::path cacheDir =
+        args.has("cache") ? std::filesystem::path(args.get("cache")) : gi::defaultReferenceDirectory();
+
+    // Load every scene first: a typo fails before any GPU work.
+    std::vector<scene::Scene> scenes;
+    for (const std::string& name : sceneNames) {
+        scenes.push_back(scene::loadScene(name));
+    }
+    std::filesystem::create_directories(outDir);
+
+    rhi::DeviceHandle device = openDevice(args.common);
+    const gi::BenchContext context{.commit = std::string(gi::gitCommit()),
+                                   .device = device->adapter().name,
+                                   .driver = device->adapter().driver,
+                                   .api = std::string(rhi::apiName(device->api())),
+                                   .date = gi::utcTimestamp(),
+                                   .referenceSpp = referenceSpp};
+    std::cout << "bench: " << context.device << " (" << context.api << ", driver " << context.driver
+              << "), commit " << context.commit << "\n       " << scenes.size() << " scene(s) at " << width
+              << "x" << height << ", " << frames << " frames per run, references " << referenceSpp
+              << " spp in " << cacheDir.string() << '\n';
+    rhi::ShaderLibrary shaders(*device);
+    gi::PipelineCache pipelines(*device, shaders);
+
+    std::vector<gi::BenchRecord> records;
+    for (const scene::Scene& scene : scenes) {
+        const gi::ReferenceRequest request{.width = width, .height = height, .spp = referenceSpp};
+        const gi::Reference reference = gi::loadOrRenderReference(
+            *device, pipelines, scene, request, cacheDir, [&](uint32_t done, uint32_t total) {
+                if (done == total || done % std::max(total / 8, 1u) < 4) {
+                    std::cerr << "  reference " << scene.name << ": " << done << "/" << total << " spp\n";
+                }
+            });
+        std::cout << "  reference " << scene.name << ": " << (reference.reused ? "reused " : "rendered ")
+                  << reference.path.string() << " (" << number(reference.seconds, 3) << " s)\n";
+
+        const gi::RunRequest run{.width = width, .height = height, .frames = frames, .seed = kPathTracerSeed};
+        std::vector<double> directFrameMs;
+        for (const std::string& technique : techniques) {
+            if (technique != "direct") {
+                continue;
+            }
+            for (const std::string& preset : presets) {
+                records.push_back({scene.name,
+                                   gi::runDirect(*device, pipelines, scene, preset, run, reference),
+                                   reference.path.string()});
+                printRun(scene.name, records.back().run);
+                directFrameMs.push_back(records.back().run.frameMs);
+            }
+        }
+        if (std::ranges::find(techniques, "pathtracer") != techniques.end()) {
+            // Equal time: as many samples per frame as fit in the direct renderer's median frame
+            // (at least one, which on a slow device costs more than equal time: the row says so).
+            const double msPerSample = gi::pathTracerMsPerSample(*device, pipelines, scene, width, height);
+            const double baseMs = directFrameMs.empty() ? msPerSample : gi::median(directFrameMs);
+            for (double budget : budgets) {
+                gi::RunRequest ptRun = run;
+                ptRun.samplesPerFrame =
+                    uint32_t(std::clamp(std::floor(budget * baseMs / msPerSample), 1.0, 65536.0));
+                const std::string preset = number(budget, 3) + "x-time";
+                records.push_back({scene.name,
+                                   gi::runPathTracer(*device, pipelines, scene, preset, ptRun, reference),
+                                   reference.path.string()});
+                printRun(scene.name, records.back().run);
+            }
+        }
+    }
+
+    const std::filesystem::path csv = outDir / "bench.csv", json = outDir / "bench.json",
+                                png = outDir / "bench.png";
+    gi::writeBenchCsv(csv, context, records);
+    gi::writeBenchJson(json, context, records);
+    std::cout << "wrote " << csv.string() << " and " << json.string() << '\n';
+    if (!args.has("no-plot") && makePlot(csv, png)) {
+        std::cout << "wrote " << png.string() << '\n';
+    }
+    uint64_t nonFinite = 0;
+    for (const gi::BenchRecord& record : records) {
+        nonFinite += record.run.nonFinitePixels;
+    }
+    if (nonFinite != 0) {
+        std::cerr << "bench: " << nonFinite << " NaN/Inf pixel(s) in the measured images\n";
+        return 1;
+    }
+    if (device->validationMessageCount() != 0) {
+        std::cerr << "bench: " << device->validationMessageCount() << " validation message(s)\n";
+        return 1;
+    }
+    return 0;
+}
+
+} // namespace
+
+Command benchCommand() {
+    return {
+        .name = "bench",
+        .summary = "time every technique and preset and measure its error against the path tracer",
+        .usage =
+            "lumina bench [--scenes A,B] [--techniques direct,pathtracer] [--presets low,medium,high] "
+            "[--pt-budgets 1,4,16] [--size WxH] [--frames N] [--reference-spp N] [--cache DIR] [--out DIR]",
+        .description =
+            "For each scene, renders a path-traced reference with AOVs (or reuses the one cached for the "
+            "same "
+            "scene, size, samples and seed), then runs each technique at each preset for --frames frames "
+            "(default 16) at --size (default 128x128). The direct technique is the deferred renderer "
+            "(presets "
+            "set its shadow-map sizes); the path tracer runs at equal time with the direct renderer's median "
+            "frame (samples per frame chosen from its measured cost, at least 1) and at the other budgets of "
+            "--pt-budgets, accumulating across frames. Per configuration it records the median GPU time per "
+            "frame and per pass (timestamp queries), relMSE of the final image and of the indirect term "
+            "against the reference at frame 1 and after the last frame, mean FLIP, the frames to converge "
+            "(first checkpoint within 5% of the final error) and the GPU memory held. Writes DIR/bench.csv, "
+            "DIR/bench.json (default DIR: bench) with the commit, device, driver and API, and DIR/bench.png, "
+            "error against frame time on log-log axes (python3-matplotlib). docs/measurement.md has the "
+            "columns.",
+        .flags = {{"scenes", "LIST",
+                   "comma-separated scenes (default cornell_box,cornell_box_point,open_top_box)"},
+                  {"techniques", "LIST", "direct, pathtracer (default both)"},
+                  {"presets", "LIST", "presets of the direct renderer: low, medium, high (default all)"},
+                  {"pt-budgets", "LIST",
+                   "path-tracer frame budgets in multiples of the direct frame (default 1,4,16)"},
+                  {"reference-spp", "N", "samples per pixel of the references (default 256)"},
+                  {"cache", "DIR", "where references are kept (default $LUMINA_CACHE_DIR/references)"},
+                  {"no-plot", "", "write the CSV and JSON only"}},
+        .run = runBench};
+}
+
+} // namespace lumina::app

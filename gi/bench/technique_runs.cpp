@@ -1,0 +1,228 @@
+#include "gi/bench/technique_runs.h"
+
+#include "gi/core/frame_context.h"
+#include "gi/deferred/buffer_readback.h"
+#include "gi/deferred/deferred_renderer.h"
+#include "gi/gpu_scene/gpu_scene.h"
+#include "gi/measure/compare.h"
+#include "gi/pathtracer/path_tracer.h"
+#include "gi/pathtracer/path_tracer_scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <stdexcept>
+
+namespace lumina::gi {
+
+namespace {
+
+// Samples timed for pathTracerMsPerSample, after one warm-up sample.
+constexpr uint32_t kCalibrationSamples = 4;
+
+const std::map<std::string, DirectPreset>& directPresets() {
+    static const std::map<std::string, DirectPreset> presets = {
+        {"low", {.sunShadowSize = 1024, .pointShadowSize = 256}},
+        {"medium", {.sunShadowSize = 2048, .pointShadowSize = 512}},
+        {"high", {.sunShadowSize = 4096, .pointShadowSize = 1024}},
+    };
+    return presets;
+}
+
+uint64_t nonFiniteCount(const image::Image& image) {
+    uint64_t count = 0;
+    for (const char* c : {"R", "G", "B"}) {
+        for (float v : image.channel(c)) {
+            count += std::isfinite(v) ? 0 : 1;
+        }
+    }
+    return count;
+}
+
+// Measures one checkpoint: the final image and the indirect term against the reference.
+Checkpoint measure(uint32_t frame, const image::Image& finalImage, const image::Image& indirect,
+                   const Reference& reference, uint64_t& nonFinite) {
+    const image::Image referenceIndirect = rgbOf(reference.image, "indirect");
+    const measure::CompareResult final = measure::compareImages(reference.image, finalImage);
+    nonFinite += nonFiniteCount(finalImage) + nonFiniteCount(indirect);
+    return {.frame = frame,
+            .relMse = final.linear.relMse,
+            .indirectRelMse = measure::relMse(referenceIndirect, indirect),
+            .flip = final.flip.mean};
+}
+
+image::Image rgbOnly(image::Image image) {
+    image.removeChannel("A");
+    return image;
+}
+
+// Runs `frames` frames through `recordFrame`, timing each, and measures the checkpoints
+// through `readImages` (final image, indirect term).
+void runFrames(rhi::IDevice& device, PipelineCache& pipelines, const RunRequest& request,
+               const Reference& reference, const std::function<void(FrameContext&)>& recordFrame,
+               const std::function<std::pair<image::Image, image::Image>()>& readImages, TechniqueRun& run) {
+    TimingTable table;
+    rhi::CommandListHandle list = device.createCommandList();
+    rhi::IQueue& queue = device.queue(rhi::QueueType::Graphics);
+    const std::vector<uint32_t> checkpoints = checkpointFrames(request.frames);
+    for (uint32_t frameIndex = 0; frameIndex < request.frames; ++frameIndex) {
+        list->begin();
+        FrameContext frame(pipelines, *list, frameIndex);
+        recordFrame(frame);
+        list->end();
+        queue.waitForValue(queue.submit(*list));
+        table.addFrame(list->timerResults(), frame.skipped());
+        if (std::ranges::find(checkpoints, frameIndex + 1) != checkpoints.end()) {
+            auto [finalImage, indirect] = readImages();
+            run.checkpoints.push_back(
+                measure(frameIndex + 1, finalImage, indirect, reference, run.nonFinitePixels));
+            if (frameIndex + 1 == request.frames) {
+                run.finalImage = std::move(finalImage);
+            }
+        }
+    }
+    run.frames = request.frames;
+    run.frameMs = table.medianFrameMs();
+    run.passes = table.passes();
+    run.framesToConverge = framesToConverge(run.checkpoints);
+}
+
+void checkRequest(const RunRequest& request, const Reference& reference) {
+    if (request.frames == 0) {
+        throw std::invalid_argument("bench: at least one frame per run");
+    }
+    if (reference.image.width() != request.width || reference.image.height() != request.height) {
+        throw std::invalid_argument("bench: the reference is " + std::to_string(reference.image.width()) +
+                                    "x" + std::to_string(reference.image.height()) + ", the run " +
+                                    std::to_string(request.width) + "x" + std::to_string(request.height));
+    }
+}
+
+} // namespace
+
+const std::vector<std::string>& directPresetNames() {
+    static const std::vector<std::string> names = {"low", "medium", "high"};
+    return names;
+}
+
+DirectPreset directPreset(const std::string& name) {
+    const auto found = directPresets().find(name);
+    if (found == directPresets().end()) {
+        throw std::invalid_argument("unknown preset '" + name + "' for technique direct (low, medium, high)");
+    }
+    return found->second;
+}
+
+std::vector<uint32_t> checkpointFrames(uint32_t frames) {
+    std::vector<uint32_t> result;
+    for (uint32_t f = 1; f < frames; f *= 2) {
+        result.push_back(f);
+    }
+    result.push_back(frames);
+    return result;
+}
+
+uint32_t framesToConverge(const std::vector<Checkpoint>& checkpoints, double tolerance) {
+    if (checkpoints.empty()) {
+        return 0;
+    }
+    const double last = checkpoints.back().relMse;
+    for (const Checkpoint& c : checkpoints) {
+        if (std::abs(c.relMse - last) <= tolerance * last) {
+            return c.frame;
+        }
+    }
+    return checkpoints.back().frame;
+}
+
+TechniqueRun runDirect(rhi::IDevice& device, PipelineCache& pipelines, const scene::Scene& scene,
+                       const std::string& preset, const RunRequest& request, const Reference& reference) {
+    checkRequest(request, reference);
+    const DirectPreset shadows = directPreset(preset);
+    TechniqueRun run{
+        .technique = "direct", .preset = preset, .width = request.width, .height = request.height};
+    const uint64_t baseline = device.allocatedMemoryBytes();
+    GpuScene gpuScene(device, scene);
+    DeferredRenderer renderer(device, scene, gpuScene,
+                              {.width = request.width,
+                               .height = request.height,
+                               .sunShadowSize = shadows.sunShadowSize,
+                               .pointShadowSize = shadows.pointShadowSize,
+                               .log = [](std::string_view) {}});
+    runFrames(
+        device, pipelines, request, reference, [&](FrameContext& frame) { renderer.render(frame); },
+        [&] {
+            image::Image hdr = rgbOnly(readTextureImage(device, *renderer.hdr()));
+            // What GI adds (indirect x albedo) is the final image less the direct light.
+            image::Image indirect = rgbOnly(readTextureImage(device, *renderer.direct()));
+            for (const char* c : {"R", "G", "B"}) {
+                std::span<float> out = indirect.channel(c);
+                std::span<const float> total = hdr.channel(c);
+                for (size_t i = 0; i < out.size(); ++i) {
+                    out[i] = total[i] - out[i];
+                }
+            }
+            return std::pair{std::move(hdr), std::move(indirect)};
+        },
+        run);
+    run.gpuMemoryBytes = device.allocatedMemoryBytes() - baseline;
+    return run;
+}
+
+TechniqueRun runPathTracer(rhi::IDevice& device, PipelineCache& pipelines, const scene::Scene& scene,
+                           const std::string& preset, const RunRequest& request, const Reference& reference) {
+    checkRequest(request, reference);
+    if (request.seed == ReferenceRequest{}.seed) {
+        throw std::invalid_argument("bench: the path tracer under test must not use the reference's seed");
+    }
+    TechniqueRun run{.technique = "pathtracer",
+                     .preset = preset,
+                     .width = request.width,
+                     .height = request.height,
+                     .samplesPerFrame = std::max(request.samplesPerFrame, 1u)};
+    const uint64_t baseline = device.allocatedMemoryBytes();
+    const PathTracerScene traced(device, scene);
+    PathTracer tracer(device, traced, scene,
+                      {.width = request.width, .height = request.height, .seed = request.seed, .aovs = true});
+    runFrames(
+        device, pipelines, request, reference,
+        [&](FrameContext& frame) { tracer.recordSamples(frame, run.samplesPerFrame); },
+        [&] {
+            const PathTracerResult result = tracer.readResult();
+            image::Image radiance = image::Image::rgb(request.width, request.height);
+            for (const char* c : {"R", "G", "B"}) {
+                std::ranges::copy(result.image.channel(c), radiance.channel(c).begin());
+            }
+            return std::pair{std::move(radiance), rgbOf(result.image, "indirect")};
+        },
+        run);
+    run.gpuMemoryBytes = device.allocatedMemoryBytes() - baseline;
+    return run;
+}
+
+double pathTracerMsPerSample(rhi::IDevice& device, PipelineCache& pipelines, const scene::Scene& scene,
+                             uint32_t width, uint32_t height) {
+    const PathTracerScene traced(device, scene);
+    PathTracer tracer(device, traced, scene, {.width = width, .height = height, .seed = 7, .aovs = true});
+    rhi::CommandListHandle list = device.createCommandList();
+    rhi::IQueue& queue = device.queue(rhi::QueueType::Graphics);
+    double ms = 0.0;
+    // The first submission also compiles the kernel on some drivers; the second is timed as
+    // the bench's frames are: several samples in one list (lavapipe runs dispatches
+    // asynchronously, so a lone dispatch's timestamps say little).
+    for (uint32_t samples : {1u, kCalibrationSamples}) {
+        list->begin();
+        FrameContext frame(pipelines, *list, samples);
+        tracer.recordSamples(frame, samples);
+        list->end();
+        queue.waitForValue(queue.submit(*list));
+        ms = 0.0;
+        for (const rhi::TimerResult& timer : list->timerResults()) {
+            ms += timer.milliseconds;
+        }
+    }
+    return ms / kCalibrationSamples;
+}
+
+} // namespace lumina::gi

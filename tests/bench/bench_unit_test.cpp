@@ -1,0 +1,78 @@
+// The CPU halves of the bench: checkpoint schedule, convergence rule, reference cache keys.
+#include "gi/bench/reference_cache.h"
+#include "gi/bench/technique_runs.h"
+#include "gi/scene/scene_loader.h"
+
+#include <gtest/gtest.h>
+
+namespace lumina::gi {
+namespace {
+
+TEST(BenchCheckpoints, PowersOfTwoThenTheLastFrame) {
+    EXPECT_EQ(checkpointFrames(1), (std::vector<uint32_t>{1}));
+    EXPECT_EQ(checkpointFrames(5), (std::vector<uint32_t>{1, 2, 4, 5}));
+    EXPECT_EQ(checkpointFrames(16), (std::vector<uint32_t>{1, 2, 4, 8, 16}));
+}
+
+TEST(BenchCheckpoints, ConvergesAtTheFirstCheckpointNearTheLast) {
+    const std::vector<Checkpoint> falling = {{1, 1.0}, {2, 0.5}, {4, 0.26}, {8, 0.251}, {16, 0.25}};
+    EXPECT_EQ(framesToConverge(falling), 4u); // 0.26 is within 5% of 0.25, 0.5 is not
+    const std::vector<Checkpoint> flat = {{1, 0.1}, {2, 0.1}};
+    EXPECT_EQ(framesToConverge(flat), 1u);
+    EXPECT_EQ(framesToConverge({}), 0u);
+}
+
+TEST(ReferenceCache, KeyFollowsEverythingThatChangesTheImage) {
+    const scene::Scene scene = scene::loadScene("cornell_box_point");
+    const ReferenceRequest request{.width = 32, .height = 32, .spp = 16};
+    const uint64_t key = referenceKey(scene, request);
+    EXPECT_EQ(key, referenceKey(scene::loadScene("cornell_box_point"), request)) << "not deterministic";
+
+    ReferenceRequest other = request;
+    other.spp = 32;
+    EXPECT_NE(key, referenceKey(scene, other));
+    other = request;
+    other.width = 33;
+    EXPECT_NE(key, referenceKey(scene, other));
+    other = request;
+    other.seed += 1;
+    EXPECT_NE(key, referenceKey(scene, other));
+
+    scene::Scene brighter = scene;
+    brighter.lights.at(0).intensity *= 2.0f;
+    EXPECT_NE(key, referenceKey(brighter, request));
+    scene::Scene moved = scene;
+    moved.camera.position.x += 1.0f;
+    EXPECT_NE(key, referenceKey(moved, request));
+    scene::Scene recoloured = scene;
+    recoloured.materials.at(0).baseColor.r *= 0.5f;
+    EXPECT_NE(key, referenceKey(recoloured, request));
+
+    const std::filesystem::path path = referencePath("/cache", scene, request);
+    EXPECT_EQ(path.parent_path(), std::filesystem::path("/cache"));
+    EXPECT_TRUE(path.filename().string().starts_with("cornell_box_point_32x32_16spp_")) << path;
+}
+
+TEST(BenchPresets, UnknownPresetsAreNamed) {
+    EXPECT_EQ(directPreset("high").sunShadowSize, 4096u);
+    EXPECT_LT(directPreset("low").pointShadowSize, directPreset("medium").pointShadowSize);
+    try {
+        directPreset("ultra");
+        FAIL() << "no exception";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("ultra"), std::string::npos);
+    }
+}
+
+TEST(ReferenceCache, RgbOfNamesAMissingChannel) {
+    image::Image image = image::Image::rgb(2, 1);
+    image.addChannel("indirect.R", 1.0f);
+    EXPECT_THROW(rgbOf(image, "indirect"), image::ImageError);
+    image.addChannel("indirect.G", 2.0f);
+    image.addChannel("indirect.B", 3.0f);
+    const image::Image rgb = rgbOf(image, "indirect");
+    EXPECT_EQ(rgb.at("B", 1, 0), 3.0f);
+}
+
+} // namespace
+} // namespace lumina::gi
