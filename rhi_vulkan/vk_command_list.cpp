@@ -281,6 +281,7 @@ void CommandList::beginTimer(std::string_view name) {
         endRendering();
     }
     context_->beginLabel(commandBuffer_, name);
+    barrierBeforeTimestamp();
     timestamps_.beginRegion(commandBuffer_, name);
     scopes_.push_back(Scope::Timer);
 }
@@ -295,9 +296,26 @@ void CommandList::endTimer() {
     if (timestamps_.nextNeedsCommandReset()) {
         endRendering();
     }
+    barrierBeforeTimestamp();
     timestamps_.endRegion(commandBuffer_);
     context_->endLabel(commandBuffer_);
     scopes_.pop_back();
+}
+
+void CommandList::barrierBeforeTimestamp() {
+    if (!context_->timestampsNeedBarrier()) {
+        return;
+    }
+    // Execution only, no access scopes: it orders, but makes no write visible, so synchronization
+    // validation still reports a missing read-after-write or write-after-write barrier.
+    endRendering(); // a barrier inside dynamic rendering would need a self-dependency
+    auto barrier = vkStruct<VkMemoryBarrier2>(VK_STRUCTURE_TYPE_MEMORY_BARRIER_2);
+    barrier.srcStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+    barrier.dstStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+    auto dependency = vkStruct<VkDependencyInfo>(VK_STRUCTURE_TYPE_DEPENDENCY_INFO);
+    dependency.memoryBarrierCount = 1;
+    dependency.pMemoryBarriers = &barrier;
+    vkCmdPipelineBarrier2(commandBuffer_, &dependency);
 }
 
 std::vector<rhi::TimerResult> CommandList::timerResults() {

@@ -110,6 +110,8 @@ private:
     void prepareDraw(const char* command, bool indexed);
     void beginRendering();
     void endRendering();
+    // See Context::timestampsNeedBarrier.
+    void barrierBeforeTimestamp();
 
     std::shared_ptr<Context> context_;
     rhi::QueueType type_;

@@ -50,6 +50,10 @@ public:
     uint32_t subgroupSize() const { return subgroupSize_; }
     const EnabledFeatures& features() const { return features_; }
     const rhi::AdapterInfo& adapter() const { return adapter_; }
+    // CPU implementations (lavapipe) write a timestamp when the queue thread reaches it, while
+    // earlier dispatches may still run on worker threads, whatever the stage asked for; only a
+    // pipeline barrier waits for them. Command lists then put one before every timestamp.
+    bool timestampsNeedBarrier() const { return properties_.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU; }
 
     const std::shared_ptr<HardwareQueue>& graphicsQueue() const { return graphicsQueue_; }
     const std::shared_ptr<HardwareQueue>& computeQueue() const { return computeQueue_; }
