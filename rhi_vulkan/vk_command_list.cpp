@@ -281,8 +281,11 @@ void CommandList::beginTimer(std::string_view name) {
         endRendering();
     }
     context_->beginLabel(commandBuffer_, name);
-    barrierBeforeTimestamp();
+    if (context_->timestampsNeedBarrier()) {
+        endRendering(); // draws before the timestamp are rasterised before it
+    }
     timestamps_.beginRegion(commandBuffer_, name);
+    barrierAfterTimestamp();
     scopes_.push_back(Scope::Timer);
 }
 
@@ -296,19 +299,22 @@ void CommandList::endTimer() {
     if (timestamps_.nextNeedsCommandReset()) {
         endRendering();
     }
-    barrierBeforeTimestamp();
+    if (context_->timestampsNeedBarrier()) {
+        endRendering();
+    }
     timestamps_.endRegion(commandBuffer_);
+    barrierAfterTimestamp();
     context_->endLabel(commandBuffer_);
     scopes_.pop_back();
 }
 
-void CommandList::barrierBeforeTimestamp() {
+void CommandList::barrierAfterTimestamp() {
     if (!context_->timestampsNeedBarrier()) {
         return;
     }
     // Execution only, no access scopes: it orders, but makes no write visible, so synchronization
-    // validation still reports a missing read-after-write or write-after-write barrier.
-    endRendering(); // a barrier inside dynamic rendering would need a self-dependency
+    // validation still reports a missing read-after-write or write-after-write barrier. The
+    // callers ended any rendering: a barrier inside it would need a self-dependency.
     auto barrier = vkStruct<VkMemoryBarrier2>(VK_STRUCTURE_TYPE_MEMORY_BARRIER_2);
     barrier.srcStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
     barrier.dstStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;

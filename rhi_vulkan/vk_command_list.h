@@ -111,7 +111,7 @@ private:
     void beginRendering();
     void endRendering();
     // See Context::timestampsNeedBarrier.
-    void barrierBeforeTimestamp();
+    void barrierAfterTimestamp();
 
     std::shared_ptr<Context> context_;
     rhi::QueueType type_;
