@@ -83,8 +83,8 @@ PlacedCard placeCard(const MeshCard& meshCard, const glm::mat4& transform,
     card.boundsMaxAndInstance = glm::vec4(placed.unpaddedBounds.max + glm::vec3(padding), 0.0f);
     card.normalAndPadding = glm::vec4(normal, padding);
     card.info = glm::uvec4(0u, 0u, meshCard.axis, 0u);
-    placed.tilesX = tilesFor(uSize * scaleU * settings.texelsPerUnit, settings.maxCardTiles);
-    placed.tilesY = tilesFor(vSize * scaleV * settings.texelsPerUnit, settings.maxCardTiles);
+    placed.tilesX = tilesFor(uSize * scaleU * settings.texelsPerUnit, maxCardTilesIn(settings));
+    placed.tilesY = tilesFor(vSize * scaleV * settings.texelsPerUnit, maxCardTilesIn(settings));
     return placed;
 }
 

@@ -2,6 +2,8 @@
 // What a scene's surface cache is built with: atlas size, card resolution and card generation.
 // Lengths are in scene units (gi/scene/units.h), so texelsPerUnit depends on the scene's scale:
 // 1 texel per unit is 1 mm texels in the Cornell box (millimetres).
+#include "gi/surface_cache/tile_allocator.h"
+
 #include <cstdint>
 
 namespace lumina::surface_cache {
@@ -11,6 +13,7 @@ struct SurfaceCacheSettings {
     float texelsPerUnit = 1.0f;   // card texel density before rounding up to whole tiles
     uint32_t maxCardTiles = 16;   // a card side never exceeds this many tiles (1024 texels):
                                   // large surfaces get a lower density instead of filling the atlas
+                                  // (and never more than the atlas side)
     float paddingTexels = 2.0f;   // card bounds grow by this many texels (1/texelsPerUnit each)...
     float minPaddingUnits = 0.0f; // ...or by this much in scene units, whichever is larger: SDF hits
                                   // lie off the surface by up to about half a mesh-SDF voxel (open
@@ -28,6 +31,12 @@ void validate(const SurfaceCacheSettings& settings);
 inline float paddingUnits(const SurfaceCacheSettings& settings) {
     const float texels = settings.paddingTexels / settings.texelsPerUnit;
     return texels > settings.minPaddingUnits ? texels : settings.minPaddingUnits;
+}
+
+// The most tiles a card side takes: maxCardTiles, or the atlas side when that is smaller.
+inline uint32_t maxCardTilesIn(const SurfaceCacheSettings& settings) {
+    const uint32_t atlasTiles = settings.atlasSize / kTileSize;
+    return settings.maxCardTiles < atlasTiles ? settings.maxCardTiles : atlasTiles;
 }
 
 } // namespace lumina::surface_cache

@@ -189,6 +189,11 @@ TEST(SurfaceCachePlacement, TilesAreCappedAndAtLeastOne) {
         EXPECT_LE(placed.tilesX, 8u);
         EXPECT_LE(placed.tilesY, 8u);
     }
+    // A small atlas caps cards at its own side.
+    settings.atlasSize = 256;
+    EXPECT_EQ(maxCardTilesIn(settings), 4u);
+    ASSERT_EQ(cards[4].axis, LUMINA_CARD_AXIS_POS_Z); // u along x: 1000 units
+    EXPECT_EQ(placeCard(cards[4], glm::mat4(1.0f), settings).tilesX, 4u);
 }
 
 } // namespace
