@@ -7,6 +7,7 @@
 #include "shaders/surface_cache/card_bvh_test_shared.h"
 #include "tests/rhi/gpu_test_fixture.h"
 #include "tests/surface_cache/random_cards.h"
+#include "tests/surface_cache/scene_triangles.h"
 
 namespace lumina::test {
 namespace {
@@ -124,15 +125,10 @@ TEST_P(SurfaceCacheCardBvhGpu, CornellBoxHitsFindTheirCards) {
     const SurfaceCards cards(scene);
     // Points on every triangle with its normal, and a grid through the box with axis normals.
     std::vector<surface_cache::test::OwnerQuery> queries;
-    for (const scene::Instance& instance : scene.instances) {
-        const scene::Mesh& mesh = scene.meshes[instance.mesh];
-        for (size_t t = 0; t < mesh.indices.size(); t += 3) {
-            const glm::vec3 a = mesh.positions[mesh.indices[t]], b = mesh.positions[mesh.indices[t + 1]],
-                            c = mesh.positions[mesh.indices[t + 2]];
-            const glm::vec3 n = glm::normalize(glm::cross(b - a, c - a));
-            for (float s : {0.1f, 0.33f, 0.6f}) {
-                queries.push_back({a + s * (b - a) + 0.5f * (1.0f - s) * (c - a), n});
-            }
+    for (const surface_cache::test::WorldTriangle& tri : surface_cache::test::worldTriangles(scene)) {
+        const glm::vec3 a = tri.a, b = tri.b, c = tri.c, n = tri.normal;
+        for (float s : {0.1f, 0.33f, 0.6f}) {
+            queries.push_back({a + s * (b - a) + 0.5f * (1.0f - s) * (c - a), n});
         }
     }
     for (int i = 0; i < 4096; ++i) {

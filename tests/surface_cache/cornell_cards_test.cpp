@@ -4,6 +4,7 @@
 #include "gi/scene/scene_loader.h"
 #include "gi/surface_cache/card_bvh.h"
 #include "gi/surface_cache/surface_cards.h"
+#include "tests/surface_cache/scene_triangles.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
@@ -92,33 +93,29 @@ TEST_F(SurfaceCacheCornell, EveryTriangleIsOwnedByACardOfItsMeshFacingItsWay) {
     const SurfaceCards cards(scene);
     const CardBvh bvh = buildCardBvh(cards.cards());
     uint32_t triangles = 0;
-    for (uint32_t i = 0; i < scene.instances.size(); ++i) {
-        const scene::Mesh& mesh = scene.meshes[scene.instances[i].mesh];
-        for (size_t t = 0; t < mesh.indices.size(); t += 3) {
-            const glm::vec3 a = mesh.positions[mesh.indices[t]], b = mesh.positions[mesh.indices[t + 1]],
-                            c = mesh.positions[mesh.indices[t + 2]];
-            const glm::vec3 normal = glm::normalize(glm::cross(b - a, c - a));
-            // Sample points across the triangle, including near its corners.
-            for (const glm::vec3 w : {glm::vec3(1, 1, 1) / 3.0f, glm::vec3(0.9f, 0.05f, 0.05f),
-                                      glm::vec3(0.05f, 0.9f, 0.05f), glm::vec3(0.05f, 0.05f, 0.9f)}) {
-                const glm::vec3 p = w.x * a + w.y * b + w.z * c;
-                const CardOwner owner = findCardOwner(bvh, cards.cards(), p, normal);
-                ASSERT_NE(owner.card, LUMINA_NO_CARD) << scene.instances[i].name;
-                EXPECT_EQ(cards.instanceOf(owner.card), i)
-                    << scene.instances[i].name << " at " << p.x << ", " << p.y << ", " << p.z << " owned by "
-                    << cards.describe(owner.card);
-                EXPECT_GT(glm::dot(glm::vec3(cards.cards()[owner.card].normalAndPadding), normal), 0.5f);
-                // The point lies on the card: inside its (u, v) square and depth slab.
-                const glm::vec3 local = gpu::worldToCardSpace(cards.cards()[owner.card], p);
-                EXPECT_GE(local.x, -1e-4f);
-                EXPECT_LE(local.x, 1.0f + 1e-4f);
-                EXPECT_GE(local.y, -1e-4f);
-                EXPECT_LE(local.y, 1.0f + 1e-4f);
-                EXPECT_GT(local.z, 0.0f);
-                EXPECT_LT(local.z, 1.0f);
-            }
-            ++triangles;
+    for (const test::WorldTriangle& tri : test::worldTriangles(scene)) {
+        const uint32_t i = tri.instance;
+        const glm::vec3 a = tri.a, b = tri.b, c = tri.c, normal = tri.normal;
+        // Sample points across the triangle, including near its corners.
+        for (const glm::vec3 w : {glm::vec3(1, 1, 1) / 3.0f, glm::vec3(0.9f, 0.05f, 0.05f),
+                                  glm::vec3(0.05f, 0.9f, 0.05f), glm::vec3(0.05f, 0.05f, 0.9f)}) {
+            const glm::vec3 p = w.x * a + w.y * b + w.z * c;
+            const CardOwner owner = findCardOwner(bvh, cards.cards(), p, normal);
+            ASSERT_NE(owner.card, LUMINA_NO_CARD) << scene.instances[i].name;
+            EXPECT_EQ(cards.instanceOf(owner.card), i)
+                << scene.instances[i].name << " at " << p.x << ", " << p.y << ", " << p.z << " owned by "
+                << cards.describe(owner.card);
+            EXPECT_GT(glm::dot(glm::vec3(cards.cards()[owner.card].normalAndPadding), normal), 0.5f);
+            // The point lies on the card: inside its (u, v) square and depth slab.
+            const glm::vec3 local = gpu::worldToCardSpace(cards.cards()[owner.card], p);
+            EXPECT_GE(local.x, -1e-4f);
+            EXPECT_LE(local.x, 1.0f + 1e-4f);
+            EXPECT_GE(local.y, -1e-4f);
+            EXPECT_LE(local.y, 1.0f + 1e-4f);
+            EXPECT_GT(local.z, 0.0f);
+            EXPECT_LT(local.z, 1.0f);
         }
+        ++triangles;
     }
     EXPECT_EQ(triangles, scene.triangleCount());
 }
@@ -132,19 +129,15 @@ TEST_F(SurfaceCacheCornell, SdfHitsInFrontOfTheSurfaceFindTheirCards) {
     const SurfaceCards cards(scene, settings);
     EXPECT_EQ(paddingUnits(cards.settings()), 10.0f);
     const CardBvh bvh = buildCardBvh(cards.cards());
-    for (uint32_t i = 0; i < scene.instances.size(); ++i) {
-        const scene::Mesh& mesh = scene.meshes[scene.instances[i].mesh];
-        for (size_t t = 0; t < mesh.indices.size(); t += 3) {
-            const glm::vec3 a = mesh.positions[mesh.indices[t]], b = mesh.positions[mesh.indices[t + 1]],
-                            c = mesh.positions[mesh.indices[t + 2]];
-            const glm::vec3 normal = glm::normalize(glm::cross(b - a, c - a));
-            for (float offset : {0.5f, 2.0f, 4.0f}) {
-                const glm::vec3 p = 0.8f * a + 0.1f * b + 0.1f * c + offset * normal;
-                const CardOwner owner = findCardOwner(bvh, cards.cards(), p, normal);
-                ASSERT_NE(owner.card, LUMINA_NO_CARD) << scene.instances[i].name << " offset " << offset;
-                EXPECT_EQ(cards.instanceOf(owner.card), i) << scene.instances[i].name << " offset " << offset
-                                                           << " owned by " << cards.describe(owner.card);
-            }
+    for (const test::WorldTriangle& tri : test::worldTriangles(scene)) {
+        const uint32_t i = tri.instance;
+        const glm::vec3 a = tri.a, b = tri.b, c = tri.c, normal = tri.normal;
+        for (float offset : {0.5f, 2.0f, 4.0f}) {
+            const glm::vec3 p = 0.8f * a + 0.1f * b + 0.1f * c + offset * normal;
+            const CardOwner owner = findCardOwner(bvh, cards.cards(), p, normal);
+            ASSERT_NE(owner.card, LUMINA_NO_CARD) << scene.instances[i].name << " offset " << offset;
+            EXPECT_EQ(cards.instanceOf(owner.card), i) << scene.instances[i].name << " offset " << offset
+                                                       << " owned by " << cards.describe(owner.card);
         }
     }
 }
