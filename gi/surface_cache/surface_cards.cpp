@@ -129,12 +129,16 @@ void SurfaceCards::moveInstance(uint32_t instance, const glm::mat4& transform,
         throw std::out_of_range("SurfaceCards::moveInstance: instance " + std::to_string(instance) + " of " +
                                 std::to_string(instanceFirst_.size() - 1));
     }
+    // Placed on a copy and committed at the end: a move that does not fit (or a singular
+    // transform) throws and leaves every card and the atlas as they were.
+    SurfaceCards next = *this;
     for (uint32_t card = instanceFirst_[instance]; card < instanceFirst_[instance + 1]; ++card) {
-        const gpu::SurfaceCard& c = cards_[card];
+        const gpu::SurfaceCard& c = next.cards_[card];
         const uint32_t keep = gpu::asuint(c.boundsMinAndFlags.w) & LUMINA_CARD_VISIBLE;
-        place(card, meshCards_[c.info.x][c.info.y], transform, lights,
-              keep | LUMINA_CARD_DIRTY | LUMINA_CARD_DYNAMIC);
+        next.place(card, meshCards_[c.info.x][c.info.y], transform, lights,
+                   keep | LUMINA_CARD_DIRTY | LUMINA_CARD_DYNAMIC);
     }
+    *this = std::move(next);
 }
 
 void SurfaceCards::markCaptured(uint32_t card, uint32_t frame) {

@@ -37,7 +37,9 @@ public:
     const SurfaceCacheSettings& settings() const { return settings_; }
 
     // Places an instance's cards anew (they become DYNAMIC and DIRTY), with new atlas rectangles
-    // where their size in tiles changed. The card BVH must be rebuilt afterwards.
+    // where their size in tiles changed; a full atlas is defragmented first (the cards that move
+    // become DIRTY). The card BVH must be rebuilt afterwards. Strong guarantee: when it throws
+    // (atlas full, singular transform) nothing has changed.
     void moveInstance(uint32_t instance, const glm::mat4& transform, std::span<const scene::Light> lights);
     // The capture pass has written the card's texels at `frame`: clears DIRTY.
     void markCaptured(uint32_t card, uint32_t frame);
