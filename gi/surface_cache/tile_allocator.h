@@ -72,6 +72,9 @@ public:
     // Side in tiles of the largest free block: no rectangle wider or taller can be allocated.
     uint32_t largestFreeBlock() const;
     uint32_t owner(uint32_t tileX, uint32_t tileY) const;
+    // Every tile's owner, row-major (tilesX per row), kNoOwner where free: the contents of the
+    // tile-to-card lookup that lets an atlas pass find a texel's card with one load.
+    const std::vector<uint32_t>& ownerTable() const { return owners_; }
     // Free blocks per level (index k: blocks of side 2^k), for tests and diagnostics.
     std::vector<uint32_t> freeBlockCounts() const;
 

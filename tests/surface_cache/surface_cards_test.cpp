@@ -54,6 +54,7 @@ void expectAtlasConsistent(const SurfaceCards& cards) {
             ASSERT_EQ(atlas.owner(x, y), owners[size_t(y) * atlas.tilesX() + x]) << x << ", " << y;
         }
     }
+    ASSERT_EQ(atlas.ownerTable(), owners);
 }
 
 TEST(SurfaceCacheCards, RandomMovesKeepTheAtlasConsistentDefragmentAndFailCleanly) {
