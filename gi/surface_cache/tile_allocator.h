@@ -61,8 +61,8 @@ public:
     // Gives back a rectangle returned by allocate (throws std::invalid_argument otherwise).
     void release(const TileRect& rect);
     // Re-places every live rectangle, largest first; returns the ones that moved. When even the
-    // repacked layout would not hold them all (it always does for power-of-two squares), nothing
-    // moves and the result is empty.
+    // repacked layout would not hold them all (it always does for power-of-two squares in a power-of-two
+    // square atlas), nothing moves and the result is empty.
     std::vector<TileRelocation> defragment();
 
     uint32_t tilesX() const { return tilesX_; }
