@@ -1,0 +1,31 @@
+#ifndef LUMINA_CARD_BVH_TEST_SHARED_H
+#define LUMINA_CARD_BVH_TEST_SHARED_H
+// Queries and results of the card BVH test kernel (card_bvh_query_test.hlsl), shared with
+// tests/surface_cache/card_bvh_gpu_test.cpp.
+#include "../common/shared_types.h"
+
+LUMINA_GPU_NAMESPACE_BEGIN
+
+struct CardBvhQuery {
+    float4 position; // xyz: world point; w: 0
+    float4 normal;   // xyz: unit normal; w: 0
+};
+
+struct CardBvhQueryResult {
+    float4 ownerAndScore; // x: asfloat(card, LUMINA_NO_CARD for none); y: its score; zw: 0
+};
+
+struct CardBvhQueryConstants {
+    uint queryCount;
+    uint pad0;
+    uint pad1;
+    uint pad2;
+};
+
+LUMINA_STATIC_ASSERT_SIZE(CardBvhQuery, 32);
+LUMINA_STATIC_ASSERT_SIZE(CardBvhQueryResult, 16);
+LUMINA_STATIC_ASSERT_SIZE(CardBvhQueryConstants, 16);
+
+LUMINA_GPU_NAMESPACE_END
+
+#endif
