@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Plots `lumina bench` results: relMSE after convergence against GPU time per frame, log-log,
+"""Plots `lumina bench` results: relMSE after the last frame against GPU time per frame, log-log,
 one curve per technique (its presets in order of cost), one panel per scene.
 
     python3 scripts/plot_bench.py bench/bench.csv bench/bench.png
@@ -45,7 +45,7 @@ def main(argv):
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_xlabel("GPU time per frame (ms)")
-        ax.set_ylabel("relMSE vs reference (after convergence)")
+        ax.set_ylabel("relMSE vs reference after the last frame")
         ax.set_title(scene)
         ax.grid(True, which="both", alpha=0.3)
         ax.legend()
