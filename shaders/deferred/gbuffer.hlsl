@@ -6,6 +6,7 @@
 // (RGBA32F: xyz, w = view depth along the camera's forward axis); background pixels keep
 // the cleared zeros, so w = 0 marks "no surface" in the normal and position targets.
 #include "common/bindings.hlsli"
+#include "common/instance_transform.hlsli"
 #include "common/scene_shared.h"
 #include "deferred/deferred_shared.h"
 
@@ -34,13 +35,8 @@ struct GBufferTargets {
 Varyings vsMain(uint vertexId : SV_VertexID) {
     const GpuVertex vertex = gVertices[vertexId];
     const GpuInstance instance = gInstances[gDraw.instance];
-    const float4 objectPosition = float4(vertex.positionU.xyz, 1.0);
-    const float3 world = float3(dot(instance.objectToWorld[0], objectPosition),
-                                dot(instance.objectToWorld[1], objectPosition),
-                                dot(instance.objectToWorld[2], objectPosition));
-    const float3 normal = float3(dot(instance.normalToWorld[0].xyz, vertex.normalV.xyz),
-                                 dot(instance.normalToWorld[1].xyz, vertex.normalV.xyz),
-                                 dot(instance.normalToWorld[2].xyz, vertex.normalV.xyz));
+    const float3 world = instancePointToWorld(instance, vertex.positionU.xyz);
+    const float3 normal = instanceNormalToWorld(instance, vertex.normalV.xyz);
     const float4 p = float4(world, 1.0);
     Varyings output;
     output.position = float4(dot(gFrame.camera.viewProjRows[0], p), dot(gFrame.camera.viewProjRows[1], p),
@@ -52,11 +48,7 @@ Varyings vsMain(uint vertexId : SV_VertexID) {
 }
 
 float3 sampleLayer(uint layer, float2 uv) {
-    if (layer == LUMINA_NO_TEXTURE_LAYER) {
-        return float3(1.0, 1.0, 1.0);
-    }
-    // The array is sRGB: sampling decodes to linear.
-    return gTextures.Sample(gMaterialSampler, float3(uv, float(layer))).rgb;
+    return sampleMaterialLayer(gTextures, gMaterialSampler, layer, uv);
 }
 
 GBufferTargets psMain(Varyings input, bool isFrontFace : SV_IsFrontFace) {

@@ -5,6 +5,7 @@
 // linear distance to the light over the light's shadow range; depth (D32) only resolves
 // visibility within the face.
 #include "common/bindings.hlsli"
+#include "common/instance_transform.hlsli"
 #include "common/scene_shared.h"
 #include "deferred/deferred_shared.h"
 
@@ -20,10 +21,7 @@ struct Varyings {
 
 Varyings vsMain(uint vertexId : SV_VertexID) {
     const GpuInstance instance = gInstances[gDraw.instance];
-    const float4 objectPosition = float4(gVertices[vertexId].positionU.xyz, 1.0);
-    const float3 world = float3(dot(instance.objectToWorld[0], objectPosition),
-                                dot(instance.objectToWorld[1], objectPosition),
-                                dot(instance.objectToWorld[2], objectPosition));
+    const float3 world = instancePointToWorld(instance, gVertices[vertexId].positionU.xyz);
     const uint cube = gDraw.layer / LUMINA_CUBE_FACE_COUNT;
     const uint face = gDraw.layer % LUMINA_CUBE_FACE_COUNT;
     const float4 light = gShadow.pointLights[cube];

@@ -2,6 +2,7 @@
 // Sun shadow map: depth only, every instance through the sun's orthographic projection
 // (DeferredShadowConstants::sunViewProjRows). Depth 0 is nearest the sun.
 #include "common/bindings.hlsli"
+#include "common/instance_transform.hlsli"
 #include "common/scene_shared.h"
 #include "deferred/deferred_shared.h"
 
@@ -12,10 +13,7 @@ StructuredBuffer<GpuInstance> gInstances : register(t1);
 
 float4 vsMain(uint vertexId : SV_VertexID) : SV_Position {
     const GpuInstance instance = gInstances[gDraw.instance];
-    const float4 objectPosition = float4(gVertices[vertexId].positionU.xyz, 1.0);
-    const float4 world = float4(dot(instance.objectToWorld[0], objectPosition),
-                                dot(instance.objectToWorld[1], objectPosition),
-                                dot(instance.objectToWorld[2], objectPosition), 1.0);
+    const float4 world = float4(instancePointToWorld(instance, gVertices[vertexId].positionU.xyz), 1.0);
     return float4(dot(gShadow.sunViewProjRows[0], world), dot(gShadow.sunViewProjRows[1], world),
                   dot(gShadow.sunViewProjRows[2], world), dot(gShadow.sunViewProjRows[3], world));
 }

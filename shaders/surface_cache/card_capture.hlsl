@@ -10,6 +10,7 @@
 // clearVsMain / clearPsMain first reset the rectangle: zero texels, depth at the slab's back.
 #include "common/bindings.hlsli"
 #include "common/lights_shared.h"
+#include "common/instance_transform.hlsli"
 #include "common/scene_shared.h"
 #include "surface_cache/card_capture_shared.h"
 #include "surface_cache/surface_card_shared.h"
@@ -37,28 +38,19 @@ struct CaptureTargets {
 Varyings vsMain(uint vertexId : SV_VertexID) {
     const GpuVertex vertex = gVertices[vertexId];
     const GpuInstance instance = gInstances[gDraw.instance];
-    const float4 objectPosition = float4(vertex.positionU.xyz, 1.0);
-    const float3 world =
-        float3(dot(instance.objectToWorld[0], objectPosition), dot(instance.objectToWorld[1], objectPosition),
-               dot(instance.objectToWorld[2], objectPosition));
+    const float3 world = instancePointToWorld(instance, vertex.positionU.xyz);
     const float3 card = worldToCardSpace(gCards[gDraw.card], world);
     Varyings output;
     // The viewport is the card's rectangle: u runs right, v down the atlas while clip y runs up
     // (both backends: the Vulkan one flips its viewport).
     output.position = float4(2.0 * card.x - 1.0, 1.0 - 2.0 * card.y, card.z, 1.0);
-    output.normal = float3(dot(instance.normalToWorld[0].xyz, vertex.normalV.xyz),
-                           dot(instance.normalToWorld[1].xyz, vertex.normalV.xyz),
-                           dot(instance.normalToWorld[2].xyz, vertex.normalV.xyz));
+    output.normal = instanceNormalToWorld(instance, vertex.normalV.xyz);
     output.uv = float2(vertex.positionU.w, vertex.normalV.w);
     return output;
 }
 
 float3 sampleLayer(uint layer, float2 uv) {
-    if (layer == LUMINA_NO_TEXTURE_LAYER) {
-        return float3(1.0, 1.0, 1.0);
-    }
-    // The array is sRGB: sampling decodes to linear.
-    return gTextures.Sample(gMaterialSampler, float3(uv, float(layer))).rgb;
+    return sampleMaterialLayer(gTextures, gMaterialSampler, layer, uv);
 }
 
 CaptureTargets psMain(Varyings input) {
