@@ -56,6 +56,7 @@ SurfaceCache::SurfaceCache(rhi::IDevice& device, const scene::Scene& scene, cons
       capture_(device, scene, gpuScene, atlas_), tileOwner_(device, cards_.atlas()),
       allTiles_(device, settings.atlasSize, "surface cache card tiles"),
       radiosityTiles_(device, settings.atlasSize, "surface cache radiosity tiles"),
+      directTiles_(device, settings.atlasSize, "surface cache direct-light tiles"),
       voxels_(device, gridOverCards(cards_, lighting.voxelResolution), sdf,
               radiosityOriginOffset(lighting.trace, sdf)),
       radiosity_(device, settings.atlasSize, sdf, lighting.trace),
@@ -78,7 +79,30 @@ void SurfaceCache::uploadCards(rhi::ICommandList& commands) {
     cardsChanged_ = false;
 }
 
-void SurfaceCache::update(gi::FrameContext& frame) {
+bool SurfaceCache::recordDirectLight(gi::FrameContext& frame, const std::optional<gi::ShadowedLights>& lights,
+                                     const std::vector<uint32_t>& capturedTiles) {
+    const char* kPass = SurfaceCacheDirectLightPass::kPassName;
+    if (!lights) {
+        frame.skip(kPass, "no lights given");
+        return false;
+    }
+    const std::pair<uint64_t, uint64_t> versions{lights->lightsVersion, lights->geometryVersion};
+    const bool lightsChanged = directVersions_ != versions;
+    if (!lightsChanged && capturedTiles.empty()) {
+        frame.skip(kPass, "no light or card changed");
+        return false;
+    }
+    directTiles_.recordUpload(frame.commands(), lightsChanged ? cardTiles_ : capturedTiles);
+    const AtlasSurfaceBindings surfaces{atlas_, tileOwner_.texture(), cardBuffer_, capture_.depth()};
+    directLight_.record(frame, surfaces, *lights, directTiles_);
+    if (lightsChanged) {
+        schedule_.restart(); // the light the bounces carry changed
+    }
+    directVersions_ = versions;
+    return true;
+}
+
+void SurfaceCache::update(gi::FrameContext& frame, const std::optional<gi::ShadowedLights>& lights) {
     if (!initialised_) {
         atlas_.recordClear(frame.commands());
         voxels_.recordClear(frame.commands());
@@ -90,11 +114,11 @@ void SurfaceCache::update(gi::FrameContext& frame) {
     }
 
     const std::vector<uint32_t> dirty = cards_.dirtyCards();
+    std::vector<uint32_t> dirtyTiles;
     if (dirty.empty()) {
         frame.skip(kCapturePassName, "no dirty cards");
     } else {
         capture_.record(frame, atlas_, cardBuffer_, cards_.cards(), dirty);
-        std::vector<uint32_t> dirtyTiles;
         for (uint32_t card : dirty) {
             cards_.markCaptured(card, uint32_t(frame.frameIndex()));
             const glm::uvec4 rect = cards_.cards()[card].atlasRect / kTileSize;
@@ -107,9 +131,11 @@ void SurfaceCache::update(gi::FrameContext& frame) {
         schedule_.markDirty(dirtyTiles);
     }
 
-    // Combine and voxel lighting only when what they read changed: the capture, or the
-    // indirect light the last update's radiosity wrote.
-    if (!dirty.empty() || indirectChanged_) {
+    const bool directChanged = recordDirectLight(frame, lights, dirtyTiles);
+
+    // Combine and voxel lighting only when what they read changed: the capture, the direct
+    // light, or the indirect light the last update's radiosity wrote.
+    if (!dirty.empty() || directChanged || indirectChanged_) {
         combine_.record(frame, atlas_, allTiles_);
         const AtlasSurfaceBindings surfaces{atlas_, tileOwner_.texture(), cardBuffer_, capture_.depth()};
         voxels_.record(frame, surfaces, allTiles_);

@@ -22,11 +22,13 @@
 #include "gi/surface_cache/radiosity_schedule.h"
 #include "gi/surface_cache/surface_cache_atlas.h"
 #include "gi/surface_cache/surface_cache_combine_pass.h"
+#include "gi/surface_cache/surface_cache_direct_light_pass.h"
 #include "gi/surface_cache/surface_cards.h"
 #include "gi/surface_cache/tile_owner_texture.h"
 #include "gi/surface_cache/voxel_lighting_pass.h"
 
 #include <glm/glm.hpp>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -48,9 +50,10 @@ public:
                  const sdf::SceneSdf& sdf, const SurfaceCacheSettings& settings,
                  const SurfaceLightingSettings& lighting = {});
 
-    // Records one update. The cards it captures count as captured once it returns: submit the
-    // frame's commands.
-    void update(gi::FrameContext& frame);
+    // Records one update, lit by `lights` (the deferred renderer's, after its render() this
+    // frame), or by emission alone without them. The cards it captures count as captured once
+    // it returns: submit the frame's commands.
+    void update(gi::FrameContext& frame, const std::optional<gi::ShadowedLights>& lights = std::nullopt);
 
     // An instance moved: its cards are placed anew and captured at the next update, and
     // radiosity restarts.
@@ -75,6 +78,9 @@ public:
 
 private:
     void uploadCards(rhi::ICommandList& commands);
+    // Records the direct light where it is stale; true when it ran.
+    bool recordDirectLight(gi::FrameContext& frame, const std::optional<gi::ShadowedLights>& lights,
+                           const std::vector<uint32_t>& capturedTiles);
 
     rhi::IDevice& device_;
     SurfaceCards cards_;
@@ -84,6 +90,8 @@ private:
     rhi::BufferHandle cardBuffer_;
     AtlasTileList allTiles_;       // every tile that holds a card: combine and voxel inject
     AtlasTileList radiosityTiles_; // the schedule's pick
+    AtlasTileList directTiles_;    // tiles whose direct light is stale
+    SurfaceCacheDirectLightPass directLight_;
     SurfaceCacheCombinePass combine_;
     VoxelLightingPass voxels_;
     RadiosityPass radiosity_;
@@ -93,6 +101,8 @@ private:
     bool cardsChanged_ = true;     // card buffer and tile-to-card lookup need an upload
     bool indirectChanged_ = false; // radiosity wrote the indirect layer after the last combine
     uint32_t updates_ = 0;
+    // The lights' versions the direct layer was computed with; none before the first.
+    std::optional<std::pair<uint64_t, uint64_t>> directVersions_;
 };
 
 } // namespace lumina::surface_cache

@@ -54,6 +54,11 @@ struct AtlasTileListConstants {
 };
 LUMINA_STATIC_ASSERT_SIZE(AtlasTileListConstants, 16);
 
+struct SurfaceDirectLightConstants {
+    uint4 atlas; // x: atlas size in texels; y: tiles in the list; z: tiles per atlas row; w: lights
+};
+LUMINA_STATIC_ASSERT_SIZE(SurfaceDirectLightConstants, 16);
+
 // The voxel-lighting grid over the scene bounds.
 struct VoxelGridInfo {
     float4 minAndVoxelSize; // xyz: world corner of voxel (0,0,0); w: voxel side

@@ -10,7 +10,9 @@
 #include "gi/surface_cache/surface_cache.h"
 
 #include <cstring>
+#include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,14 +35,16 @@ public:
           sdf(device, scene, smallSdfSettings()), pipelines(device, shaders),
           cache(device, scene, gpuScene, sdf, settings, lighting) {}
 
-    // Records one frame (SDF compose, then one cache update), submits it and waits; returns
-    // the passes it skipped and adds its timers to `timings`.
-    std::vector<gi::SkippedPass> update() {
+    // Records one frame (SDF compose, the lights' frame when given: it records its passes and
+    // returns its lights, then one cache update), submits it and waits; returns the passes it
+    // skipped and adds its timers to `timings`.
+    using LightsFrame = std::function<std::optional<gi::ShadowedLights>(gi::FrameContext&)>;
+    std::vector<gi::SkippedPass> update(const LightsFrame& lights = {}) {
         rhi::CommandListHandle list = device_.createCommandList();
         list->begin();
         gi::FrameContext frame(pipelines, *list, frameIndex_++);
         sdf.record(frame);
-        cache.update(frame);
+        cache.update(frame, lights ? lights(frame) : std::nullopt);
         list->end();
         rhi::IQueue& queue = device_.queue(list->queueType());
         queue.waitForValue(queue.submit(*list));
