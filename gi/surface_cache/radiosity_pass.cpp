@@ -55,8 +55,8 @@ void RadiosityPass::recordClear(rhi::ICommandList& commands) const {
 }
 
 void RadiosityPass::record(gi::FrameContext& frame, const AtlasSurfaceBindings& surfaces,
-                           const VoxelLightingPass& voxels, const AtlasTileList& tiles,
-                           uint32_t update) const {
+                           const VoxelLightingPass& voxels, const AtlasTileList& tiles, uint32_t update,
+                           float blend) const {
     if (tiles.count() == 0) {
         for (const char* pass : {kTracePassName, kFilterPassName, kIntegratePassName}) {
             frame.skip(pass, "no tiles to update");
@@ -66,7 +66,7 @@ void RadiosityPass::record(gi::FrameContext& frame, const AtlasSurfaceBindings& 
     const gpu::RadiosityConstants constants{
         .grid = voxels.grid(),
         .atlas = {surfaces.atlas.size(), tiles.count(), tiles.tilesPerRow(), update},
-        .trace = {originOffset_, maxDistance_, filterMinCosine_, 0.0f}};
+        .trace = {originOffset_, maxDistance_, filterMinCosine_, blend}};
     const auto bindSurfaces = [&](gi::ComputePass& pass) -> gi::ComputePass& {
         return pass.constants(constants)
             .read(6, surfaces.atlas.surface)

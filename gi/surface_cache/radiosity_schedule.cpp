@@ -89,6 +89,9 @@ std::vector<uint32_t> RadiositySchedule::next() {
     };
     const size_t count = std::min<size_t>(settings_.tilesPerUpdate, order.size());
     std::partial_sort(order.begin(), order.begin() + ptrdiff_t(count), order.end(), before);
+    // Picked fewest-updates first: the first is the least-updated tile.
+    const uint32_t passes = tiles_[order[0]].updates;
+    lastBlend_ = passes < required_ ? 1.0f : 1.0f / float(passes - required_ + 2);
     std::vector<uint32_t> picked;
     picked.reserve(count);
     for (size_t i = 0; i < count; ++i) {

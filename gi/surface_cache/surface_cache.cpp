@@ -149,7 +149,8 @@ void SurfaceCache::update(gi::FrameContext& frame, const std::optional<gi::Shado
     const std::vector<uint32_t> tiles = schedule_.next();
     if (tiles.empty()) {
         const std::string reason =
-            "converged after " + std::to_string(schedule_.completedBounces()) + " bounces";
+            "converged after " + std::to_string(schedule_.requiredBounces()) + " bounces and " +
+            std::to_string(schedule_.requiredUpdates() - schedule_.requiredBounces()) + " refinement passes";
         for (const char* pass : {RadiosityPass::kTracePassName, RadiosityPass::kFilterPassName,
                                  RadiosityPass::kIntegratePassName}) {
             frame.skip(pass, reason);
@@ -157,7 +158,7 @@ void SurfaceCache::update(gi::FrameContext& frame, const std::optional<gi::Shado
     } else {
         radiosityTiles_.recordUpload(frame.commands(), tiles);
         const AtlasSurfaceBindings surfaces{atlas_, tileOwner_.texture(), cardBuffer_, capture_.depth()};
-        radiosity_.record(frame, surfaces, voxels_, radiosityTiles_, updates_);
+        radiosity_.record(frame, surfaces, voxels_, radiosityTiles_, updates_, schedule_.lastBlend());
         indirectChanged_ = true;
     }
     ++updates_;

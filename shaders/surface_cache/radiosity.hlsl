@@ -161,6 +161,16 @@ float3 finiteOrZero(float3 v) {
     result.g = shG;
     result.b = shB;
     result.normalAndValid = float4(n, 1.0f);
+    // Refinement (radiosity_schedule.h): the mean of this trace and the history, weighted
+    // 1 / (k + 1) for the k-th pass, so that rotated ray sets average out; a convex combination,
+    // so it never adds energy.
+    float blend = gConstants.trace.w;
+    RadiosityProbe history = gProbesOut[probeIndex(probe)];
+    if (blend < 1.0f && history.normalAndValid.w != 0.0f) {
+        result.r = lerp(history.r, result.r, blend);
+        result.g = lerp(history.g, result.g, blend);
+        result.b = lerp(history.b, result.b, blend);
+    }
     gProbesOut[probeIndex(probe)] = result;
 }
 

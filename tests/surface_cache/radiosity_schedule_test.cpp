@@ -46,6 +46,7 @@ TEST(RadiositySchedule, BudgetDirtyFirstThenOldestUntilConverged) {
     RadiosityScheduleSettings s;
     s.tilesPerUpdate = 4;
     s.tolerance = 0.1f; // 0.5^4 = 0.0625: four bounces
+    s.refinementPasses = 2;
     RadiositySchedule schedule(s, 0.5f);
     ASSERT_EQ(schedule.requiredBounces(), 4u);
     const std::vector<uint32_t> tiles = {3, 5, 8, 13, 21, 34, 55, 89, 144, 233};
@@ -80,12 +81,19 @@ TEST(RadiositySchedule, BudgetDirtyFirstThenOldestUntilConverged) {
     }
 
     uint32_t updates = 0;
+    std::vector<float> blends;
     while (!schedule.converged() && updates < 100) {
         EXPECT_FALSE(schedule.next().empty());
+        blends.push_back(schedule.lastBlend());
         ++updates;
     }
     ASSERT_TRUE(schedule.converged());
-    EXPECT_EQ(schedule.completedBounces(), 4u);
+    EXPECT_EQ(schedule.requiredUpdates(), 6u);
+    EXPECT_EQ(schedule.completedBounces(), 6u); // 4 bounces, 2 refinement passes
+    // Bounces replace the probes; the refinement passes average 1/2, then 1/3.
+    EXPECT_EQ(blends.front(), 1.0f);
+    EXPECT_FLOAT_EQ(blends.back(), 1.0f / 3.0f);
+    EXPECT_NE(std::find(blends.begin(), blends.end(), 0.5f), blends.end());
     EXPECT_TRUE(schedule.next().empty()) << "converged: nothing to do";
 
     // A light moved: everything runs again.
@@ -98,6 +106,7 @@ TEST(RadiositySchedule, NewTilesStartDirtyAndKeptTilesKeepTheirBounces) {
     RadiosityScheduleSettings s;
     s.tilesPerUpdate = 2;
     s.tolerance = 0.1f;
+    s.refinementPasses = 0;
     RadiositySchedule schedule(s, 0.5f);
     const std::vector<uint32_t> first = {1, 2};
     schedule.setTiles(first);

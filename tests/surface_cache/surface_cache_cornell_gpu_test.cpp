@@ -64,7 +64,7 @@ CornellFigures measure(rhi::IDevice& device, rhi::ShaderLibrary& shaders, const 
         return renderer.shadowedLights();
     };
     uint32_t updates = 0;
-    while (updates < 300) {
+    while (updates < 400) {
         const auto skipped = h.update(lit);
         ++updates;
         if (!skipReason(skipped, RadiosityPass::kTracePassName).empty() &&
@@ -125,8 +125,8 @@ CornellFigures measure(rhi::IDevice& device, rhi::ShaderLibrary& shaders, const 
 }
 
 // Regression bounds around the figures measured when this was written (docs/surface_cache.md):
-// the mean radiance checks the energy, the relMSE the per-pixel error, which 16 rays per probe
-// without temporal accumulation leave dominated by a few probes that caught a bright spot.
+// the mean radiance checks the energy, the relMSE the per-pixel error (0.54 and 0.32 before the
+// refinement passes averaged the probes' 16-ray traces).
 void expectNear(const CornellFigures& f, double meanTolerance, double relMseBound) {
     EXPECT_GT(f.pixels, kImageSize * kImageSize / 2);
     EXPECT_LT(f.missing, f.pixels / 100);
@@ -140,7 +140,7 @@ TEST_P(SurfaceCacheCornellGpu, PointLightAgainstThePathTracer) {
     LUMINA_REQUIRE_KERNELS();
     expectNear(
         measure(device(), shaders(), "cornell_box_point", [&](rhi::ICommandList& l) { submitAndWait(l); }),
-        0.05, 0.7);
+        0.05, 0.1);
 }
 
 // The emissive-quad Cornell box: all light reaches the walls through radiosity rays hitting the
@@ -148,7 +148,7 @@ TEST_P(SurfaceCacheCornellGpu, PointLightAgainstThePathTracer) {
 TEST_P(SurfaceCacheCornellGpu, EmissiveLightAgainstThePathTracer) {
     LUMINA_REQUIRE_KERNELS();
     expectNear(measure(device(), shaders(), "cornell_box", [&](rhi::ICommandList& l) { submitAndWait(l); }),
-               0.2, 0.45);
+               0.15, 0.1);
 }
 
 LUMINA_INSTANTIATE_GPU_TEST(SurfaceCacheCornellGpu);

@@ -53,7 +53,7 @@ FurnaceResult runFurnace(rhi::IDevice& device, rhi::ShaderLibrary& shaders, cons
     FurnaceResult result;
     // Until radiosity is converged, then one more update: combine turns the last bounce's
     // irradiance into radiance.
-    const uint32_t limit = h.cache.radiositySchedule().requiredBounces() + 4;
+    const uint32_t limit = h.cache.radiositySchedule().requiredUpdates() + 4;
     while (result.updates < limit) {
         const auto skipped = h.update();
         ++result.updates;

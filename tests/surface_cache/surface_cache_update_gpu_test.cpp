@@ -26,6 +26,8 @@ const char* const kLightingPasses[] = {
     VoxelLightingPass::kResolvePassName, RadiosityPass::kTracePassName,
     RadiosityPass::kFilterPassName,      RadiosityPass::kIntegratePassName};
 
+constexpr const char* kConverged = "converged after 9 bounces and 16 refinement passes";
+
 TEST_P(SurfaceCacheUpdateGpu, SkipsWhatDidNotChangeAndRestartsOnAMove) {
     LUMINA_REQUIRE_KERNELS();
     SurfaceCacheHarness h(device(), shaders(), scene::loadScene("furnace_0.5"), smallAtlas());
@@ -38,9 +40,11 @@ TEST_P(SurfaceCacheUpdateGpu, SkipsWhatDidNotChangeAndRestartsOnAMove) {
     }
     EXPECT_EQ(h.cache.cards().dirtyCards().size(), 0u) << "captured cards are no longer dirty";
 
-    // Until converged: 9 bounces at rho = 0.5 (radiosity_schedule_test); nothing to capture.
-    const uint32_t required = h.cache.radiositySchedule().requiredBounces();
-    ASSERT_EQ(required, 9u);
+    // Until converged: 9 bounces at rho = 0.5 (radiosity_schedule_test), then 16 refinement
+    // passes; nothing to capture.
+    ASSERT_EQ(h.cache.radiositySchedule().requiredBounces(), 9u);
+    const uint32_t required = h.cache.radiositySchedule().requiredUpdates();
+    ASSERT_EQ(required, 25u);
     for (uint32_t i = 1; i < required; ++i) {
         skipped = h.update();
         EXPECT_EQ(skipReason(skipped, SurfaceCache::kCapturePassName), "no dirty cards");
@@ -48,8 +52,8 @@ TEST_P(SurfaceCacheUpdateGpu, SkipsWhatDidNotChangeAndRestartsOnAMove) {
     }
     // Converged: radiosity stops, combine still turns the last bounce into radiance...
     skipped = h.update();
-    EXPECT_EQ(skipReason(skipped, RadiosityPass::kTracePassName), "converged after 9 bounces");
-    EXPECT_EQ(skipReason(skipped, RadiosityPass::kIntegratePassName), "converged after 9 bounces");
+    EXPECT_EQ(skipReason(skipped, RadiosityPass::kTracePassName), kConverged);
+    EXPECT_EQ(skipReason(skipped, RadiosityPass::kIntegratePassName), kConverged);
     EXPECT_EQ(skipReason(skipped, SurfaceCacheCombinePass::kPassName), "");
     const std::vector<glm::vec4> converged = h.cache.readLayer(AtlasLayer::FinalLighting);
     // ...and then nothing runs at all, and nothing changes.
@@ -58,7 +62,7 @@ TEST_P(SurfaceCacheUpdateGpu, SkipsWhatDidNotChangeAndRestartsOnAMove) {
         EXPECT_EQ(skipReason(skipped, SurfaceCache::kCapturePassName), "no dirty cards");
         EXPECT_EQ(skipReason(skipped, SurfaceCacheCombinePass::kPassName), "nothing changed");
         EXPECT_EQ(skipReason(skipped, VoxelLightingPass::kInjectPassName), "nothing changed");
-        EXPECT_EQ(skipReason(skipped, RadiosityPass::kTracePassName), "converged after 9 bounces");
+        EXPECT_EQ(skipReason(skipped, RadiosityPass::kTracePassName), kConverged);
     }
     EXPECT_EQ(h.cache.readLayer(AtlasLayer::FinalLighting), converged);
 
@@ -78,7 +82,7 @@ TEST_P(SurfaceCacheUpdateGpu, SkipsWhatDidNotChangeAndRestartsOnAMove) {
     for (uint32_t i = 0; i < required + 1; ++i) {
         h.update();
     }
-    EXPECT_EQ(skipReason(h.update(), RadiosityPass::kTracePassName), "converged after 9 bounces");
+    EXPECT_EQ(skipReason(h.update(), RadiosityPass::kTracePassName), kConverged);
     h.cache.lightsChanged();
     skipped = h.update();
     EXPECT_EQ(skipReason(skipped, SurfaceCache::kCapturePassName), "no dirty cards");
