@@ -12,6 +12,7 @@
 #include "common/lights_shared.h"
 #include "common/scene_shared.h"
 #include "surface_cache/card_capture_shared.h"
+#include "surface_cache/surface_cache_lighting_shared.h"
 #include "surface_cache/surface_card_shared.h"
 
 LUMINA_PUSH_CONSTANTS(CardCaptureConstants, gDraw);
@@ -22,22 +23,11 @@ Texture2DArray<float4> gTextures : register(t3);
 StructuredBuffer<SurfaceCard> gCards : register(t4);
 SamplerState gMaterialSampler : register(s0);
 
-// Albedo rounded down to a half-float value, so that the write stores it exactly and never
-// above the material's: in a closed scene the radiance is Le / (1 - rho), 20 times as sensitive
-// to rho as rho itself at rho = 0.95, so rounding up would push the converged radiance past
-// the analytic value (fp16 0.99 rounds to 0.990234: 2.4 % over), and RGBA8's 1/255 steps alone
-// moved the rho = 0.95 furnace 1.9 % (docs/surface_cache.md).
-float halfFloor(float v) {
-    if (!(v > 0.0f)) {
-        return 0.0f;
-    }
-    int exponent = max(int((asuint(v) >> 23) & 0xffu) - 127, -14); // 10 fraction bits; denormals below 2^-14
-    float ulp = asfloat(uint(exponent - 10 + 127) << 23);
-    return floor(v / ulp) * ulp;
-}
-float3 halfAlbedo(float3 albedo) {
-    return float3(halfFloor(albedo.x), halfFloor(albedo.y), halfFloor(albedo.z));
-}
+// Albedo is rounded down to a half-float value (floorToHalf), so that the write stores it
+// exactly and never above the material's: in a closed scene the radiance is Le / (1 - rho), 20
+// times as sensitive to rho as rho itself at rho = 0.95, so rounding up would push the
+// converged radiance past the analytic value (fp16 0.99 rounds to 0.990234: 2.4 % over), and
+// RGBA8's 1/255 steps alone moved the rho = 0.95 furnace 1.9 % (docs/surface_cache.md).
 
 struct Varyings {
     float4 position : SV_Position;
@@ -90,7 +80,7 @@ CaptureTargets psMain(Varyings input) {
         normal = -normal;
     }
     CaptureTargets output;
-    output.albedo = float4(halfAlbedo(material.baseColor.rgb * sampleLayer(material.textures.x, input.uv)), 1.0);
+    output.albedo = float4(floorToHalf(material.baseColor.rgb * sampleLayer(material.textures.x, input.uv)), 1.0);
     output.normal = float4(normal, 1.0);
     const float3 emission = material.emission.rgb * sampleLayer(material.textures.y, input.uv);
     output.material = float4(emittedRadiance(emission, material.textures.z, cosFront), float(gDraw.material));

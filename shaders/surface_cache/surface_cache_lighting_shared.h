@@ -26,23 +26,30 @@
 #define LUMINA_VOXEL_MAX_RADIANCE 1024.0f
 
 #ifndef __cplusplus
-// Rounds to the nearest half-float value before a write to an RGBA16F target, so that the
-// conversion the write makes is exact. lavapipe converts by truncation, and the radiosity loop
-// passes each value through three half-float layers per bounce (final, voxel lighting,
-// indirect): truncating each time stalled the furnace at rho = 0.95 4 % below its analytic
-// value, at rho = 0.99 23 %. The rounding is done in float arithmetic on the exact exponent
-// (f32tof16 converts the same way as the write on lavapipe). Finite, non-negative input.
-float roundToHalf1(float v) {
-    if (!(v > 0.0f)) {
-        return 0.0f;
-    }
-    // A half has 10 fraction bits; below 2^-14 its spacing stays 2^-24 (denormals).
+// Half-float rounding done in float arithmetic on the exact exponent, so that the value written
+// to an RGBA16F target is representable and the conversion the write makes is exact, whatever
+// its rounding mode (HLSL leaves f32tof16's to the implementation). Measured on lavapipe: the
+// radiosity loop passes each value through three half-float layers per bounce (final, voxel
+// lighting, indirect), and with raw writes the rho = 0.95 furnace stalled at 19.19, with
+// rounded ones at 19.47 (both with the old RGBA8 albedo; docs/surface_cache.md).
+// The spacing of half floats around v > 0: 10 fraction bits, denormals below 2^-14.
+float halfSpacing(float v) {
     int exponent = max(int((asuint(v) >> 23) & 0xffu) - 127, -14);
-    float ulp = asfloat(uint(exponent - 10 + 127) << 23);
-    return round(v / ulp) * ulp;
+    return asfloat(uint(exponent - 10 + 127) << 23);
+}
+// Nearest half (finite input; non-positive values and NaN become 0: the layers hold light).
+float roundToHalf1(float v) {
+    return v > 0.0f ? round(v / halfSpacing(v)) * halfSpacing(v) : 0.0f;
 }
 float4 roundToHalf(float4 v) {
     return float4(roundToHalf1(v.x), roundToHalf1(v.y), roundToHalf1(v.z), roundToHalf1(v.w));
+}
+// The half at or below v (never above: albedo, see card_capture.hlsl).
+float floorToHalf1(float v) {
+    return v > 0.0f ? floor(v / halfSpacing(v)) * halfSpacing(v) : 0.0f;
+}
+float3 floorToHalf(float3 v) {
+    return float3(floorToHalf1(v.x), floorToHalf1(v.y), floorToHalf1(v.z));
 }
 #endif
 
