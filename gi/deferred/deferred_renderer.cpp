@@ -61,6 +61,17 @@ void DeferredRenderer::setLights(std::vector<scene::Light> lights) {
         settings_.log(line);
     }
     lightsDirty_ = true;
+    ++lightsVersion_;
+}
+
+ShadowedLights DeferredRenderer::shadowedLights() const {
+    return {.shadowConstants = shadowConstants_,
+            .lights = lightBuffer_,
+            .lightCount = uint32_t(lights_.lights.size()),
+            .sunShadowMap = sunShadow_.map(),
+            .pointShadowMaps = pointShadow_.maps(),
+            .lightsVersion = lightsVersion_,
+            .geometryVersion = geometryVersion_};
 }
 
 void DeferredRenderer::geometryChanged(const scene::Bounds& bounds) {

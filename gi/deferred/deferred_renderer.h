@@ -35,6 +35,19 @@ struct DeferredSettings {
     std::function<void(std::string_view)> log;
 };
 
+// The lights and shadow maps of the last recorded frame, for passes that light other surfaces
+// the way the direct-light pass does (the surface cache's direct light): the same light buffer,
+// shadow constants and maps, read through shaders/deferred/shadow_visibility.hlsli.
+struct ShadowedLights {
+    rhi::BufferHandle shadowConstants; // DeferredShadowConstants
+    rhi::BufferHandle lights;          // DeferredLight[lightCount], scene order; at least one element
+    uint32_t lightCount = 0;
+    rhi::TextureHandle sunShadowMap;    // D32
+    rhi::TextureHandle pointShadowMaps; // R32F cube array
+    uint64_t lightsVersion = 0;         // changes whenever setLights is called
+    uint64_t geometryVersion = 0;       // changes whenever geometryChanged is called
+};
+
 class DeferredRenderer {
 public:
     // `scene` and `gpuScene` must outlive the renderer.
@@ -63,6 +76,8 @@ public:
     rhi::TextureHandle pointShadowMaps() const;
     uint32_t pointShadowCubes() const { return pointShadow_.cubeCount(); }
     const LightSetup& lights() const { return lights_; }
+    // Valid once render() has recorded a frame.
+    ShadowedLights shadowedLights() const;
 
 private:
     void uploadConstants(rhi::ICommandList& commands, const std::optional<SunShadowFit>& sun,
@@ -75,6 +90,7 @@ private:
     std::vector<scene::Light> sceneLights_;
     LightSetup lights_;
     bool lightsDirty_ = true;
+    uint64_t lightsVersion_ = 0;
     scene::Bounds bounds_;
     uint64_t geometryVersion_ = 0;
     rhi::TextureHandle indirect_;

@@ -21,7 +21,7 @@ CardCapturePass::CardCapturePass(rhi::IDevice& device, const scene::Scene& scene
     depth_ = device.createTexture({.format = rhi::Format::D32_FLOAT,
                                    .width = atlas.size(),
                                    .height = atlas.size(),
-                                   .usage = rhi::TextureUsage::DepthStencil,
+                                   .usage = rhi::TextureUsage::DepthStencil | rhi::TextureUsage::Sampled,
                                    .debugName = "surface cache capture depth"});
 }
 

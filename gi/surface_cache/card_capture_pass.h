@@ -28,6 +28,10 @@ public:
     void record(gi::FrameContext& frame, const SurfaceCacheAtlas& atlas, const rhi::BufferHandle& cardBuffer,
                 std::span<const gpu::SurfaceCard> cards, std::span<const uint32_t> capture) const;
 
+    // The atlas-sized D32 depth of the captures: card-space z of each captured texel (sampled
+    // by the lighting passes to find a texel's world position).
+    const rhi::TextureHandle& depth() const { return depth_; }
+
 private:
     const gi::GpuScene& gpuScene_;
     std::vector<std::vector<gi::SceneDraw>> instanceDraws_; // per instance: its submeshes

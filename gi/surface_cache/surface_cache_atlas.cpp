@@ -23,7 +23,7 @@ SurfaceCacheAtlas::SurfaceCacheAtlas(rhi::IDevice& device, const SurfaceCacheSet
     using rhi::Format;
     using rhi::TextureDimension;
     using rhi::TextureUsage;
-    albedo = create(TextureDimension::Texture2D, Format::RGBA8_UNORM, 1, TextureUsage::RenderTarget,
+    albedo = create(TextureDimension::Texture2D, Format::RGBA16_FLOAT, 1, TextureUsage::RenderTarget,
                     "surface cache albedo");
     surface = create(TextureDimension::Texture2DArray, Format::RGBA16_FLOAT, 2, TextureUsage::RenderTarget,
                      "surface cache normal and material");
@@ -45,7 +45,7 @@ void SurfaceCacheAtlas::recordClear(rhi::ICommandList& commands) const {
 
 uint64_t SurfaceCacheAtlas::bytes() const {
     const uint64_t texels = uint64_t(size_) * size_;
-    return texels * 4 + texels * 8 * 2 + texels * 8 * 3;
+    return texels * 8 + texels * 8 * 2 + texels * 8 * 3;
 }
 
 } // namespace lumina::surface_cache

@@ -3,14 +3,14 @@
 // cards' atlas rectangles (texels; every layer shares them).
 //
 //   layer            format     written by                    holds
-//   Albedo           RGBA8      card capture (render target)  linear albedo; a = 1 where captured
-//   Normal           RGBA16F    card capture (render target)  unit world normal towards the card; a = 1 where
-//   captured Material         RGBA16F    card capture (render target)  emitted radiance; a = material index
-//   DirectLight      RGBA16F    direct-light update (UAV)     irradiance (raw, no albedo / pi)
+//   Albedo           RGBA16F    card capture (render target)  linear albedo (rounded down); a = 1 where
+//   captured Normal           RGBA16F    card capture (render target)  unit world normal towards the card; a
+//   = 1 where captured Material         RGBA16F    card capture (render target)  emitted radiance; a =
+//   material index DirectLight      RGBA16F    direct-light update (UAV)     irradiance (raw, no albedo / pi)
 //   IndirectLight    RGBA16F    radiosity (UAV)               irradiance
 //   FinalLighting    RGBA16F    combine (UAV)                 outgoing radiance, read by ray hits
 //
-// Not one six-layer array, for two reasons: the layers of one array share one format, and the
+// Not one six-layer array, for two reasons: the layers of one array may need different formats, and the
 // RHI tracks state per texture, so a pass could not read one layer of an array while it writes
 // another (the direct-light update reads Normal and writes DirectLight). The layers are grouped
 // instead by who writes them together: Normal and Material are the two layers of one RGBA16F
@@ -47,7 +47,7 @@ public:
     // Bytes of GPU memory the layers take.
     uint64_t bytes() const;
 
-    rhi::TextureHandle albedo;   // RGBA8_UNORM Texture2D
+    rhi::TextureHandle albedo;   // RGBA16_FLOAT Texture2D (not RGBA8: see docs/surface_cache.md)
     rhi::TextureHandle surface;  // RGBA16_FLOAT Texture2DArray: layer 0 normal, 1 material
     rhi::TextureHandle direct;   // RGBA16_FLOAT Texture2D
     rhi::TextureHandle indirect; // RGBA16_FLOAT Texture2D

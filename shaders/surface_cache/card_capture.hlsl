@@ -13,6 +13,7 @@
 #include "common/instance_transform.hlsli"
 #include "common/scene_shared.h"
 #include "surface_cache/card_capture_shared.h"
+#include "surface_cache/surface_cache_lighting_shared.h"
 #include "surface_cache/surface_card_shared.h"
 
 LUMINA_PUSH_CONSTANTS(CardCaptureConstants, gDraw);
@@ -23,6 +24,12 @@ Texture2DArray<float4> gTextures : register(t3);
 StructuredBuffer<SurfaceCard> gCards : register(t4);
 SamplerState gMaterialSampler : register(s0);
 
+// Albedo is rounded down to a half-float value (floorToHalf), so that the write stores it
+// exactly and never above the material's: in a closed scene the radiance is Le / (1 - rho), 20
+// times as sensitive to rho as rho itself at rho = 0.95, so rounding up would push the
+// converged radiance past the analytic value (fp16 0.99 rounds to 0.990234: 2.4 % over), and
+// RGBA8's 1/255 steps alone moved the rho = 0.95 furnace 1.9 % (docs/surface_cache.md).
+
 struct Varyings {
     float4 position : SV_Position;
     float3 normal : TEXCOORD0;
@@ -30,7 +37,7 @@ struct Varyings {
 };
 
 struct CaptureTargets {
-    float4 albedo : SV_Target0;   // RGBA8: linear albedo; a = 1 where a surface was captured
+    float4 albedo : SV_Target0;   // RGBA16F: linear albedo, rounded down; a = 1 where a surface was captured
     float4 normal : SV_Target1;   // RGBA16F: unit world normal on the card's side; a = 1
     float4 material : SV_Target2; // RGBA16F: emitted radiance; a = material index
 };
@@ -65,7 +72,7 @@ CaptureTargets psMain(Varyings input) {
         normal = -normal;
     }
     CaptureTargets output;
-    output.albedo = float4(material.baseColor.rgb * sampleLayer(material.textures.x, input.uv), 1.0);
+    output.albedo = float4(floorToHalf(material.baseColor.rgb * sampleLayer(material.textures.x, input.uv)), 1.0);
     output.normal = float4(normal, 1.0);
     const float3 emission = material.emission.rgb * sampleLayer(material.textures.y, input.uv);
     output.material = float4(emittedRadiance(emission, material.textures.z, cosFront), float(gDraw.material));

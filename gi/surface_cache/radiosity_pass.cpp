@@ -1,0 +1,98 @@
+#include "gi/surface_cache/radiosity_pass.h"
+
+#include <glm/glm.hpp>
+#include <stdexcept>
+#include <string>
+
+namespace lumina::surface_cache {
+namespace {
+
+// Rays start two global-SDF voxels off the surface: the sphere tracer stops within a fraction
+// of a voxel of a surface (its hit threshold), so closer starts would hit their own wall.
+constexpr float kOriginOffsetVoxels = 2.0f;
+
+} // namespace
+
+float radiosityOriginOffset(const RadiosityTraceSettings& settings, const sdf::SceneSdf& sdf) {
+    return settings.originOffset > 0.0f ? settings.originOffset
+                                        : kOriginOffsetVoxels * sdf.sceneInfo().globalMinAndVoxelSize.w;
+}
+
+RadiosityPass::RadiosityPass(rhi::IDevice& device, uint32_t atlasSize, const sdf::SceneSdf& sdf,
+                             const RadiosityTraceSettings& settings)
+    : sdf_(sdf), filterMinCosine_(settings.filterMinCosine) {
+    if (atlasSize == 0 || atlasSize % LUMINA_ATLAS_TILE_SIZE != 0) {
+        throw std::invalid_argument("radiosity: atlas size " + std::to_string(atlasSize) +
+                                    " is not a positive multiple of 64");
+    }
+    if (!(settings.originOffset >= 0.0f) || !(settings.maxDistance >= 0.0f) ||
+        !(settings.filterMinCosine >= -1.0f && settings.filterMinCosine <= 1.0f)) {
+        throw std::invalid_argument("radiosity: origin offset " + std::to_string(settings.originOffset) +
+                                    ", max distance " + std::to_string(settings.maxDistance) +
+                                    " and filter cosine " + std::to_string(settings.filterMinCosine) +
+                                    ": offsets and distances must be >= 0, the cosine within [-1, 1]");
+    }
+    const gpu::SdfSceneInfo info = sdf.sceneInfo();
+    originOffset_ = radiosityOriginOffset(settings, sdf);
+    maxDistance_ =
+        settings.maxDistance > 0.0f
+            ? settings.maxDistance
+            : glm::length(glm::vec3(info.globalMaxAndMaxDistance) - glm::vec3(info.globalMinAndVoxelSize));
+    const uint64_t probesPerSide = atlasSize / LUMINA_RADIOSITY_PROBE_SPACING;
+    const rhi::BufferDesc desc{.size = probesPerSide * probesPerSide * sizeof(gpu::RadiosityProbe),
+                               .structStride = sizeof(gpu::RadiosityProbe),
+                               .usage = rhi::BufferUsage::Structured | rhi::BufferUsage::Storage,
+                               .debugName = "surface cache radiosity probes (traced)"};
+    traced_ = device.createBuffer(desc);
+    rhi::BufferDesc filteredDesc = desc;
+    filteredDesc.debugName = "surface cache radiosity probes (filtered)";
+    filtered_ = device.createBuffer(filteredDesc);
+}
+
+void RadiosityPass::recordClear(rhi::ICommandList& commands) const {
+    commands.fillBuffer(*traced_, 0);
+    commands.fillBuffer(*filtered_, 0);
+}
+
+void RadiosityPass::record(gi::FrameContext& frame, const AtlasSurfaceBindings& surfaces,
+                           const VoxelLightingPass& voxels, const AtlasTileList& tiles, uint32_t update,
+                           float blend) const {
+    if (tiles.count() == 0) {
+        for (const char* pass : {kTracePassName, kFilterPassName, kIntegratePassName}) {
+            frame.skip(pass, "no tiles to update");
+        }
+        return;
+    }
+    const gpu::RadiosityConstants constants{
+        .grid = voxels.grid(),
+        .atlas = {surfaces.atlas.size(), tiles.count(), tiles.tilesPerRow(), update},
+        .trace = {originOffset_, maxDistance_, filterMinCosine_, blend}};
+    const auto bindSurfaces = [&](gi::ComputePass& pass) -> gi::ComputePass& {
+        return pass.constants(constants)
+            .read(6, surfaces.atlas.surface)
+            .read(7, surfaces.tileOwner)
+            .read(8, surfaces.cards)
+            .read(9, surfaces.captureDepth)
+            .read(10, tiles.buffer());
+    };
+    const uint32_t probesPerTile = LUMINA_PROBES_PER_TILE;
+    gi::ComputePass trace = frame.compute(kTracePassName, "surface_cache/radiosity.trace");
+    sdf_.bindForTracing(bindSurfaces(trace))
+        .read(11, voxels.volume())
+        .write(0, traced_)
+        .dispatchThreads(probesPerTile, tiles.count(), {64, 1});
+
+    gi::ComputePass filter = frame.compute(kFilterPassName, "surface_cache/radiosity.filter");
+    bindSurfaces(filter)
+        .read(12, traced_)
+        .write(0, filtered_)
+        .dispatchThreads(probesPerTile, tiles.count(), {64, 1});
+
+    gi::ComputePass integrate = frame.compute(kIntegratePassName, "surface_cache/radiosity.integrate");
+    bindSurfaces(integrate)
+        .read(12, filtered_)
+        .write(1, surfaces.atlas.indirect)
+        .dispatchThreads(LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE, tiles.count(), {64, 1});
+}
+
+} // namespace lumina::surface_cache

@@ -1,0 +1,53 @@
+#pragma once
+// Surface radiosity (shaders/surface_cache/radiosity.hlsl): one bounce of diffuse light between
+// cached surfaces per update, on the listed tiles. Probes every 4x4 texels trace 16 rays
+// through the global SDF, read the voxel lighting at their hits and project it to L1 SH; a
+// 4-neighbour filter averages probes on the same card and plane; each texel integrates its
+// probe's SH at its normal into the indirect layer (irradiance, negatives clamped).
+#include "gi/core/frame_context.h"
+#include "gi/sdf/scene_sdf.h"
+#include "gi/surface_cache/atlas_tile_list.h"
+#include "gi/surface_cache/voxel_lighting_pass.h"
+
+namespace lumina::surface_cache {
+
+struct RadiosityTraceSettings {
+    float originOffset = 0.0f; // rays start this far along the texel normal (world); 0: two global SDF voxels
+    float maxDistance = 0.0f;  // world; 0: the global SDF grid's diagonal
+    float filterMinCosine = 0.9f; // neighbours whose normals differ more are not filtered in
+};
+
+// Where probe rays start, off the surface along its normal (world units): the setting, or two
+// global-SDF voxels. Also how far in front a texel must be free for it to count as visible.
+float radiosityOriginOffset(const RadiosityTraceSettings& settings, const sdf::SceneSdf& sdf);
+
+class RadiosityPass {
+public:
+    static constexpr const char* kTracePassName = "surface cache: radiosity trace";
+    static constexpr const char* kFilterPassName = "surface cache: radiosity filter";
+    static constexpr const char* kIntegratePassName = "surface cache: radiosity integrate";
+
+    RadiosityPass(rhi::IDevice& device, uint32_t atlasSize, const sdf::SceneSdf& sdf,
+                  const RadiosityTraceSettings& settings = {});
+
+    // Zeroes the probes; record once before the first update.
+    void recordClear(rhi::ICommandList& commands) const;
+    // One bounce on the listed tiles; `update` rotates the rays, `blend` weighs the new trace
+    // against the probes' history (1: replace; RadiositySchedule::lastBlend). Skips (with the
+    // reason) when the list is empty.
+    void record(gi::FrameContext& frame, const AtlasSurfaceBindings& surfaces,
+                const VoxelLightingPass& voxels, const AtlasTileList& tiles, uint32_t update,
+                float blend = 1.0f) const;
+
+    const rhi::BufferHandle& probes() const { return filtered_; }
+
+private:
+    const sdf::SceneSdf& sdf_;
+    float originOffset_ = 0.0f;
+    float maxDistance_ = 0.0f;
+    float filterMinCosine_ = 0.9f;
+    rhi::BufferHandle traced_;   // RadiosityProbe per probe: the trace's SH
+    rhi::BufferHandle filtered_; // RadiosityProbe per probe: after the spatial filter
+};
+
+} // namespace lumina::surface_cache

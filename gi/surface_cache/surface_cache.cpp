@@ -1,0 +1,204 @@
+#include "gi/surface_cache/surface_cache.h"
+
+#include <algorithm>
+#include <glm/gtc/packing.hpp>
+#include <limits>
+#include <string>
+
+namespace lumina::surface_cache {
+namespace {
+
+// The brightest albedo channel of any material: how slowly light dies out between bounces.
+float maxAlbedo(const scene::Scene& scene) {
+    float albedo = 0.0f;
+    for (const scene::Material& material : scene.materials) {
+        albedo = std::max({albedo, material.baseColor.r, material.baseColor.g, material.baseColor.b});
+    }
+    return albedo;
+}
+
+// The voxel lighting covers every card's padded bounds.
+gpu::VoxelGridInfo gridOverCards(const SurfaceCards& cards, uint32_t resolution) {
+    glm::vec3 lo(std::numeric_limits<float>::max());
+    glm::vec3 hi(std::numeric_limits<float>::lowest());
+    for (const gpu::SurfaceCard& card : cards.cards()) {
+        lo = glm::min(lo, glm::vec3(card.boundsMinAndFlags));
+        hi = glm::max(hi, glm::vec3(card.boundsMaxAndInstance));
+    }
+    if (cards.cards().empty()) {
+        lo = glm::vec3(-1.0f);
+        hi = glm::vec3(1.0f); // an empty scene: any non-empty box, nothing is injected
+    }
+    return voxelGridOver(lo, hi, resolution);
+}
+
+std::vector<uint32_t> tilesWithCards(const TileAllocator& allocator) {
+    std::vector<uint32_t> tiles;
+    const std::vector<uint32_t>& owners = allocator.ownerTable();
+    for (uint32_t i = 0; i < owners.size(); ++i) {
+        if (owners[i] != kNoOwner) {
+            tiles.push_back(i);
+        }
+    }
+    return tiles;
+}
+
+float halfAt(const std::vector<uint8_t>& bytes, size_t index) {
+    return glm::unpackHalf1x16(uint16_t(bytes[2 * index] | (bytes[2 * index + 1] << 8)));
+}
+
+} // namespace
+
+SurfaceCache::SurfaceCache(rhi::IDevice& device, const scene::Scene& scene, const gi::GpuScene& gpuScene,
+                           const sdf::SceneSdf& sdf, const SurfaceCacheSettings& settings,
+                           const SurfaceLightingSettings& lighting)
+    : device_(device), cards_(scene, settings), atlas_(device, settings),
+      capture_(device, scene, gpuScene, atlas_), tileOwner_(device, cards_.atlas()),
+      allTiles_(device, settings.atlasSize, "surface cache card tiles"),
+      radiosityTiles_(device, settings.atlasSize, "surface cache radiosity tiles"),
+      directTiles_(device, settings.atlasSize, "surface cache direct-light tiles"),
+      voxels_(device, gridOverCards(cards_, lighting.voxelResolution), sdf,
+              radiosityOriginOffset(lighting.trace, sdf)),
+      radiosity_(device, settings.atlasSize, sdf, lighting.trace),
+      schedule_(lighting.schedule, maxAlbedo(scene)), cardTiles_(tilesWithCards(cards_.atlas())) {
+    const size_t cardBytes = std::max<size_t>(cards_.cards().size(), 1) * sizeof(gpu::SurfaceCard);
+    cardBuffer_ = device.createBuffer({.size = cardBytes,
+                                       .structStride = sizeof(gpu::SurfaceCard),
+                                       .usage = rhi::BufferUsage::Structured,
+                                       .debugName = "surface cards"});
+    schedule_.setTiles(cardTiles_);
+}
+
+void SurfaceCache::uploadCards(rhi::ICommandList& commands) {
+    if (!cards_.cards().empty()) {
+        commands.writeBuffer(*cardBuffer_, cards_.cards().data(),
+                             cards_.cards().size() * sizeof(gpu::SurfaceCard));
+    }
+    tileOwner_.recordUpload(commands, cards_.atlas());
+    allTiles_.recordUpload(commands, cardTiles_);
+    cardsChanged_ = false;
+}
+
+bool SurfaceCache::recordDirectLight(gi::FrameContext& frame, const std::optional<gi::ShadowedLights>& lights,
+                                     const std::vector<uint32_t>& capturedTiles) {
+    const char* kPass = SurfaceCacheDirectLightPass::kPassName;
+    if (!lights) {
+        frame.skip(kPass, "no lights given");
+        return false;
+    }
+    const std::pair<uint64_t, uint64_t> versions{lights->lightsVersion, lights->geometryVersion};
+    const bool lightsChanged = directVersions_ != versions;
+    if (!lightsChanged && capturedTiles.empty()) {
+        frame.skip(kPass, "no light or card changed");
+        return false;
+    }
+    directTiles_.recordUpload(frame.commands(), lightsChanged ? cardTiles_ : capturedTiles);
+    const AtlasSurfaceBindings surfaces{atlas_, tileOwner_.texture(), cardBuffer_, capture_.depth()};
+    directLight_.record(frame, surfaces, *lights, directTiles_);
+    if (lightsChanged) {
+        schedule_.restart(); // the light the bounces carry changed
+    }
+    directVersions_ = versions;
+    return true;
+}
+
+void SurfaceCache::update(gi::FrameContext& frame, const std::optional<gi::ShadowedLights>& lights) {
+    if (!initialised_) {
+        atlas_.recordClear(frame.commands());
+        voxels_.recordClear(frame.commands());
+        radiosity_.recordClear(frame.commands());
+        initialised_ = true;
+    }
+    if (cardsChanged_) {
+        uploadCards(frame.commands());
+    }
+
+    const std::vector<uint32_t> dirty = cards_.dirtyCards();
+    std::vector<uint32_t> dirtyTiles;
+    if (dirty.empty()) {
+        frame.skip(kCapturePassName, "no dirty cards");
+    } else {
+        capture_.record(frame, atlas_, cardBuffer_, cards_.cards(), dirty);
+        for (uint32_t card : dirty) {
+            cards_.markCaptured(card, uint32_t(frame.frameIndex()));
+            const glm::uvec4 rect = cards_.cards()[card].atlasRect / kTileSize;
+            for (uint32_t y = rect.y; y < rect.y + rect.w; ++y) {
+                for (uint32_t x = rect.x; x < rect.x + rect.z; ++x) {
+                    dirtyTiles.push_back(y * cards_.atlas().tilesX() + x);
+                }
+            }
+        }
+        schedule_.markDirty(dirtyTiles);
+    }
+
+    const bool directChanged = recordDirectLight(frame, lights, dirtyTiles);
+
+    // Combine and voxel lighting only when what they read changed: the capture, the direct
+    // light, or the indirect light the last update's radiosity wrote.
+    if (!dirty.empty() || directChanged || indirectChanged_) {
+        combine_.record(frame, atlas_, allTiles_);
+        const AtlasSurfaceBindings surfaces{atlas_, tileOwner_.texture(), cardBuffer_, capture_.depth()};
+        voxels_.record(frame, surfaces, allTiles_);
+        indirectChanged_ = false;
+    } else {
+        frame.skip(SurfaceCacheCombinePass::kPassName, "nothing changed");
+        frame.skip(VoxelLightingPass::kInjectPassName, "nothing changed");
+        frame.skip(VoxelLightingPass::kResolvePassName, "nothing changed");
+    }
+
+    const std::vector<uint32_t> tiles = schedule_.next();
+    if (tiles.empty()) {
+        const std::string reason =
+            "converged after " + std::to_string(schedule_.requiredBounces()) + " bounces and " +
+            std::to_string(schedule_.requiredUpdates() - schedule_.requiredBounces()) + " refinement passes";
+        for (const char* pass : {RadiosityPass::kTracePassName, RadiosityPass::kFilterPassName,
+                                 RadiosityPass::kIntegratePassName}) {
+            frame.skip(pass, reason);
+        }
+    } else {
+        radiosityTiles_.recordUpload(frame.commands(), tiles);
+        const AtlasSurfaceBindings surfaces{atlas_, tileOwner_.texture(), cardBuffer_, capture_.depth()};
+        radiosity_.record(frame, surfaces, voxels_, radiosityTiles_, updates_, schedule_.lastBlend());
+        indirectChanged_ = true;
+    }
+    ++updates_;
+}
+
+void SurfaceCache::moveInstance(uint32_t instance, const glm::mat4& transform,
+                                std::span<const scene::Light> lights) {
+    cards_.moveInstance(instance, transform, lights);
+    cardTiles_ = tilesWithCards(cards_.atlas());
+    schedule_.setTiles(cardTiles_);
+    schedule_.restart();
+    cardsChanged_ = true;
+}
+
+void SurfaceCache::lightsChanged() {
+    schedule_.restart();
+}
+
+std::vector<glm::vec4> SurfaceCache::readLayer(AtlasLayer layer) const {
+    const AtlasLayerView view = atlas_.layer(layer);
+    const std::vector<uint8_t> bytes = rhi::readTexture(device_, *view.texture, {0, view.arrayLayer});
+    const size_t texels = size_t(atlas_.size()) * atlas_.size();
+    std::vector<glm::vec4> out(texels);
+    for (size_t i = 0; i < texels; ++i) {
+        for (int c = 0; c < 4; ++c) {
+            out[i][c] = halfAt(bytes, 4 * i + size_t(c)); // every layer is RGBA16F
+        }
+    }
+    return out;
+}
+
+std::vector<glm::vec4> SurfaceCache::readVoxelLighting() const {
+    const std::vector<uint8_t> bytes = rhi::readTexture(device_, *voxels_.volume());
+    std::vector<glm::vec4> out(bytes.size() / 8);
+    for (size_t i = 0; i < out.size(); ++i) {
+        for (int c = 0; c < 4; ++c) {
+            out[i][c] = halfAt(bytes, 4 * i + size_t(c));
+        }
+    }
+    return out;
+}
+
+} // namespace lumina::surface_cache

@@ -1,0 +1,108 @@
+#pragma once
+// The whole surface cache of a scene: cards, atlas and the passes that light it. update()
+// records one update per frame:
+//
+//   capture dirty cards ─► combine ─► voxel inject ─► radiosity (one bounce, within a budget)
+//
+// Combine and voxel lighting run while something they read changed (a capture, or the last
+// update's radiosity); radiosity runs until converged and restarts when a light or object
+// moves. Every pass that does not run records why (frame.skip). The direct-light layer is not
+// written yet (docs/surface_cache.md): it stays zero, so emission is the only light source.
+//
+//   SurfaceCache cache(device, scene, gpuScene, sceneSdf, settings);
+//   cache.update(frame);                      // every frame, after sceneSdf.record(frame)
+//   cache.moveInstance(3, transform, lights); // and sceneSdf.setInstanceTransform(3, transform)
+#include "gi/core/frame_context.h"
+#include "gi/gpu_scene/gpu_scene.h"
+#include "gi/scene/scene.h"
+#include "gi/sdf/scene_sdf.h"
+#include "gi/surface_cache/atlas_tile_list.h"
+#include "gi/surface_cache/card_capture_pass.h"
+#include "gi/surface_cache/radiosity_pass.h"
+#include "gi/surface_cache/radiosity_schedule.h"
+#include "gi/surface_cache/surface_cache_atlas.h"
+#include "gi/surface_cache/surface_cache_combine_pass.h"
+#include "gi/surface_cache/surface_cache_direct_light_pass.h"
+#include "gi/surface_cache/surface_cards.h"
+#include "gi/surface_cache/tile_owner_texture.h"
+#include "gi/surface_cache/voxel_lighting_pass.h"
+
+#include <glm/glm.hpp>
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace lumina::surface_cache {
+
+struct SurfaceLightingSettings {
+    uint32_t voxelResolution = 64; // voxel lighting: voxels per side over the scene bounds
+    RadiosityTraceSettings trace;
+    RadiosityScheduleSettings schedule;
+};
+
+class SurfaceCache {
+public:
+    static constexpr const char* kCapturePassName = "surface cache: card capture";
+
+    // Keeps references to gpuScene and sdf (they must outlive the cache). Throws what
+    // SurfaceCards, SurfaceCacheAtlas and the passes throw for bad settings or a full atlas.
+    SurfaceCache(rhi::IDevice& device, const scene::Scene& scene, const gi::GpuScene& gpuScene,
+                 const sdf::SceneSdf& sdf, const SurfaceCacheSettings& settings,
+                 const SurfaceLightingSettings& lighting = {});
+
+    // Records one update, lit by `lights` (the deferred renderer's, after its render() this
+    // frame), or by emission alone without them. The cards it captures count as captured once
+    // it returns: submit the frame's commands.
+    void update(gi::FrameContext& frame, const std::optional<gi::ShadowedLights>& lights = std::nullopt);
+
+    // An instance moved: its cards are placed anew and captured at the next update, and
+    // radiosity restarts.
+    void moveInstance(uint32_t instance, const glm::mat4& transform, std::span<const scene::Light> lights);
+    // A light changed: radiosity restarts.
+    void lightsChanged();
+
+    // Every texel of a layer as linear RGBA floats, row-major (waits for the GPU). For
+    // --dump-buffers and tests.
+    std::vector<glm::vec4> readLayer(AtlasLayer layer) const;
+    // Every voxel of the voxel lighting (x fastest, then y, then z).
+    std::vector<glm::vec4> readVoxelLighting() const;
+
+    const SurfaceCards& cards() const { return cards_; }
+    const SurfaceCacheAtlas& atlas() const { return atlas_; }
+    const VoxelLightingPass& voxelLighting() const { return voxels_; }
+    const RadiositySchedule& radiositySchedule() const { return schedule_; }
+    const RadiosityPass& radiosity() const { return radiosity_; }
+    // The tiles that hold cards, row-major atlas tile indices.
+    const std::vector<uint32_t>& cardTiles() const { return cardTiles_; }
+    const CardCapturePass& capture() const { return capture_; }
+
+private:
+    void uploadCards(rhi::ICommandList& commands);
+    // Records the direct light where it is stale; true when it ran.
+    bool recordDirectLight(gi::FrameContext& frame, const std::optional<gi::ShadowedLights>& lights,
+                           const std::vector<uint32_t>& capturedTiles);
+
+    rhi::IDevice& device_;
+    SurfaceCards cards_;
+    SurfaceCacheAtlas atlas_;
+    CardCapturePass capture_;
+    TileOwnerTexture tileOwner_;
+    rhi::BufferHandle cardBuffer_;
+    AtlasTileList allTiles_;       // every tile that holds a card: combine and voxel inject
+    AtlasTileList radiosityTiles_; // the schedule's pick
+    AtlasTileList directTiles_;    // tiles whose direct light is stale
+    SurfaceCacheDirectLightPass directLight_;
+    SurfaceCacheCombinePass combine_;
+    VoxelLightingPass voxels_;
+    RadiosityPass radiosity_;
+    RadiositySchedule schedule_;
+    std::vector<uint32_t> cardTiles_;
+    bool initialised_ = false;     // the first update clears every layer and buffer
+    bool cardsChanged_ = true;     // card buffer and tile-to-card lookup need an upload
+    bool indirectChanged_ = false; // radiosity wrote the indirect layer after the last combine
+    uint32_t updates_ = 0;
+    // The lights' versions the direct layer was computed with; none before the first.
+    std::optional<std::pair<uint64_t, uint64_t>> directVersions_;
+};
+
+} // namespace lumina::surface_cache

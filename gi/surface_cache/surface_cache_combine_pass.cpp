@@ -1,0 +1,25 @@
+#include "gi/surface_cache/surface_cache_combine_pass.h"
+
+#include "shaders/surface_cache/surface_cache_lighting_shared.h"
+
+namespace lumina::surface_cache {
+
+void SurfaceCacheCombinePass::record(gi::FrameContext& frame, const SurfaceCacheAtlas& atlas,
+                                     const AtlasTileList& tiles) const {
+    if (tiles.count() == 0) {
+        frame.skip(kPassName, "no tiles to combine");
+        return;
+    }
+    frame.compute(kPassName, "surface_cache/surface_cache_combine")
+        .constants(
+            gpu::AtlasTileListConstants{.atlas = {atlas.size(), tiles.count(), tiles.tilesPerRow(), 0}})
+        .read(0, atlas.albedo)
+        .read(1, atlas.surface)
+        .read(2, atlas.direct)
+        .read(3, atlas.indirect)
+        .read(4, tiles.buffer())
+        .write(0, atlas.final)
+        .dispatchThreads(LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE, tiles.count(), {64, 1});
+}
+
+} // namespace lumina::surface_cache

@@ -1,0 +1,87 @@
+#ifndef LUMINA_SHADOW_VISIBILITY_HLSLI
+#define LUMINA_SHADOW_VISIBILITY_HLSLI
+// Shadow-map visibility of a light at a surface point: the deferred renderer's sun map and
+// point-light cube maps (gi/deferred/sun_shadow_pass.h, point_shadow_pass.h) with their biases
+// and 3x3 PCF, shared by every pass that lights surfaces with them (the deferred direct light,
+// the surface cache's direct light), so that they all see the same shadows.
+//
+// The includer names its resources first:
+//
+//   ConstantBuffer<DeferredShadowConstants> gShadow;
+//   Texture2D<float> gSunShadow;          // D32, depth 0 nearest the sun
+//   Texture2DArray<float> gPointShadows;  // R32F cube array seen as 2D array layers
+//   #define LUMINA_SHADOW_CONSTANTS gShadow
+//   #define LUMINA_SUN_SHADOW_MAP gSunShadow
+//   #define LUMINA_POINT_SHADOW_MAPS gPointShadows
+//   #include "deferred/shadow_visibility.hlsli"
+#include "deferred/deferred_shared.h"
+
+#if !defined(LUMINA_SHADOW_CONSTANTS) || !defined(LUMINA_SUN_SHADOW_MAP) || !defined(LUMINA_POINT_SHADOW_MAPS)
+#error "define LUMINA_SHADOW_CONSTANTS, LUMINA_SUN_SHADOW_MAP and LUMINA_POINT_SHADOW_MAPS before including shadow_visibility.hlsli"
+#endif
+
+// One stored shadow value: layer < 0 reads the sun map, else a layer of the cube array.
+float loadShadow(int layer, int2 texel) {
+    return layer < 0 ? LUMINA_SUN_SHADOW_MAP.Load(int3(texel, 0)) : LUMINA_POINT_SHADOW_MAPS.Load(int4(texel, layer, 0));
+}
+
+// 3x3 PCF: nine bilinearly weighted compare taps around uv, as 4x4 texel loads with separable
+// weights (tap k at offset k - 1 spreads over texels k and k + 1): 1 - f, 1, 1, f for the
+// columns base - 1 .. base + 2, summing to 3 per axis. Taps past the map's (or the cube face's)
+// edge clamp to it rather than wrapping onto the next face.
+float pcf3x3(int layer, float2 uv, float size, float receiver) {
+    const int last = int(size) - 1;
+    const float2 texel = uv * size - 0.5;
+    const float2 base = floor(texel);
+    const float2 f = texel - base;
+    const float4 wx = float4(1.0 - f.x, 1.0, 1.0, f.x);
+    const float4 wy = float4(1.0 - f.y, 1.0, 1.0, f.y);
+    float lit = 0.0;
+    [unroll] for (int j = 0; j < 4; ++j) {
+        [unroll] for (int i = 0; i < 4; ++i) {
+            const int2 at = clamp(int2(base) + int2(i - 1, j - 1), int2(0, 0), int2(last, last));
+            lit += (receiver <= loadShadow(layer, at) ? 1.0 : 0.0) * wx[i] * wy[j];
+        }
+    }
+    return lit / 9.0;
+}
+
+float sunVisibility(float3 position, float3 normal) {
+    const float texelWorld = LUMINA_SHADOW_CONSTANTS.sunMap.z;
+    const float4 p = float4(position + normal * (LUMINA_SUN_NORMAL_OFFSET_TEXELS * texelWorld), 1.0);
+    const float3 clip = float3(dot(LUMINA_SHADOW_CONSTANTS.sunViewProjRows[0], p), dot(LUMINA_SHADOW_CONSTANTS.sunViewProjRows[1], p),
+                               dot(LUMINA_SHADOW_CONSTANTS.sunViewProjRows[2], p));
+    const float2 uv = float2(0.5 + 0.5 * clip.x, 0.5 - 0.5 * clip.y);
+    if (any(uv < 0.0) || any(uv > 1.0) || clip.z > 1.0) {
+        return 1.0; // outside the fitted map: nothing there casts a shadow
+    }
+    const float receiver = clip.z - LUMINA_SUN_DEPTH_BIAS_TEXELS * texelWorld / LUMINA_SHADOW_CONSTANTS.sunMap.w;
+    return pcf3x3(-1, uv, LUMINA_SHADOW_CONSTANTS.sunMap.x, receiver);
+}
+
+float pointVisibility(uint cube, float3 position, float3 normal) {
+    const float4 light = LUMINA_SHADOW_CONSTANTS.pointLights[cube];
+    // World size of one face texel at the receiver: a face spans 2 x its major-axis distance.
+    const float texelWorld = 2.0 * length(position - light.xyz) * LUMINA_SHADOW_CONSTANTS.pointMap.y;
+    const float3 offset = position + normal * (LUMINA_POINT_NORMAL_OFFSET_TEXELS * texelWorld) - light.xyz;
+    const float receiver = (length(offset) - LUMINA_POINT_DEPTH_BIAS_TEXELS * texelWorld) / light.w;
+    if (receiver >= 1.0) {
+        return 1.0; // beyond the shadow range (unlimited lights reach the whole scene)
+    }
+    const uint face = cubeFaceOf(offset);
+    const int layer = int(cube * LUMINA_CUBE_FACE_COUNT + face);
+    return pcf3x3(layer, cubeFaceUv(offset, face), LUMINA_SHADOW_CONSTANTS.pointMap.x, receiver);
+}
+
+float shadowVisibility(DeferredLight light, float3 position, float3 normal) {
+    const uint slot = light.shadow.x;
+    if (slot == LUMINA_SHADOW_SLOT_NONE) {
+        return 1.0;
+    }
+    if (lightType(light.light) == LUMINA_LIGHT_DIRECTIONAL) {
+        return LUMINA_SHADOW_CONSTANTS.sunMap.x > 0.0 ? sunVisibility(position, normal) : 1.0;
+    }
+    return slot < uint(LUMINA_SHADOW_CONSTANTS.pointMap.w) ? pointVisibility(slot, position, normal) : 1.0;
+}
+
+#endif

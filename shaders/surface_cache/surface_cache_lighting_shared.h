@@ -1,0 +1,106 @@
+#ifndef LUMINA_SURFACE_CACHE_LIGHTING_SHARED_H
+#define LUMINA_SURFACE_CACHE_LIGHTING_SHARED_H
+// GPU layouts of the surface cache's lighting passes (combine, voxel lighting, radiosity;
+// gi/surface_cache/, docs/surface_cache.md), shared by C++ and HLSL.
+//
+// Units: the direct and indirect layers hold irradiance E (W/m^2 in the scene's units, no
+// albedo); the final layer holds outgoing radiance L = (E_direct + E_indirect) * albedo / pi
+// + Le, which is what ray hits and the voxel lighting read.
+#include "../common/shared_types.h"
+
+// Atlas texels per radiosity probe along each axis (a probe per 4x4 texels, as in Lumen).
+#define LUMINA_RADIOSITY_PROBE_SPACING 4u
+// Rays per probe and update: a 4 x 4 stratified hemisphere (uniform in cos(theta) and phi).
+#define LUMINA_RADIOSITY_RAYS_PER_SIDE 4u
+#define LUMINA_RADIOSITY_RAYS 16u
+// Atlas tile side in texels (TileAllocator's kTileSize).
+#define LUMINA_ATLAS_TILE_SIZE 64u
+#define LUMINA_PROBES_PER_TILE_SIDE 16u
+#define LUMINA_PROBES_PER_TILE 256u
+
+// Voxel lighting accumulates radiance with 32-bit integer atomics in fixed point: one unit is
+// 1 / LUMINA_VOXEL_FIXED_POINT_SCALE of radiance. A texel adds at most
+// LUMINA_VOXEL_MAX_RADIANCE * scale = 2^18, so a voxel holds 2^14 texels before a lane could
+// overflow (a 64^3 grid over a 4 m room has about 4 texels per voxel at 16 texels per metre).
+#define LUMINA_VOXEL_FIXED_POINT_SCALE 256.0f
+#define LUMINA_VOXEL_MAX_RADIANCE 1024.0f
+
+#ifndef __cplusplus
+// Half-float rounding done in float arithmetic on the exact exponent, so that the value written
+// to an RGBA16F target is representable and the conversion the write makes is exact, whatever
+// its rounding mode (HLSL leaves f32tof16's to the implementation). Measured on lavapipe: the
+// radiosity loop passes each value through three half-float layers per bounce (final, voxel
+// lighting, indirect), and with raw writes the rho = 0.95 furnace stalled at 19.19, with
+// rounded ones at 19.47 (both with the old RGBA8 albedo; docs/surface_cache.md).
+// The spacing of half floats around v > 0: 10 fraction bits, denormals below 2^-14.
+float halfSpacing(float v) {
+    int exponent = max(int((asuint(v) >> 23) & 0xffu) - 127, -14);
+    return asfloat(uint(exponent - 10 + 127) << 23);
+}
+// Nearest half (finite input; non-positive values and NaN become 0: the layers hold light).
+float roundToHalf1(float v) {
+    return v > 0.0f ? round(v / halfSpacing(v)) * halfSpacing(v) : 0.0f;
+}
+float4 roundToHalf(float4 v) {
+    return float4(roundToHalf1(v.x), roundToHalf1(v.y), roundToHalf1(v.z), roundToHalf1(v.w));
+}
+// The half at or below v (never above: albedo, see card_capture.hlsl).
+float floorToHalf1(float v) {
+    return v > 0.0f ? floor(v / halfSpacing(v)) * halfSpacing(v) : 0.0f;
+}
+float3 floorToHalf(float3 v) {
+    return float3(floorToHalf1(v.x), floorToHalf1(v.y), floorToHalf1(v.z));
+}
+#endif
+
+LUMINA_GPU_NAMESPACE_BEGIN
+
+// A list of atlas tiles to process (row-major tile indices in a StructuredBuffer<uint>).
+struct AtlasTileListConstants {
+    uint4 atlas; // x: atlas size in texels; y: tiles in the list; z: tiles per atlas row; w: 0
+};
+LUMINA_STATIC_ASSERT_SIZE(AtlasTileListConstants, 16);
+
+struct SurfaceDirectLightConstants {
+    uint4 atlas; // x: atlas size in texels; y: tiles in the list; z: tiles per atlas row; w: lights
+};
+LUMINA_STATIC_ASSERT_SIZE(SurfaceDirectLightConstants, 16);
+
+// The voxel-lighting grid over the scene bounds.
+struct VoxelGridInfo {
+    float4 minAndVoxelSize; // xyz: world corner of voxel (0,0,0); w: voxel side
+    uint4 dims;             // xyz: voxels per axis; w: 0
+};
+LUMINA_STATIC_ASSERT_SIZE(VoxelGridInfo, 32);
+
+struct VoxelInjectConstants {
+    VoxelGridInfo grid;
+    uint4 atlas; // x: atlas size in texels; y: tiles in the list; z: tiles per atlas row; w: 0
+    float4
+        buriedProbeDistance; // x: a texel is buried when the global SDF is negative this far in front (world)
+};
+LUMINA_STATIC_ASSERT_SIZE(VoxelInjectConstants, 64);
+
+struct RadiosityConstants {
+    VoxelGridInfo grid;
+    uint4
+        atlas; // x: atlas size; y: tiles in the list; z: tiles per atlas row; w: update index (ray rotation)
+    float4 trace; // x: ray origin offset along the normal (world); y: max distance; z: filter normal
+                  // threshold; w: 0
+};
+LUMINA_STATIC_ASSERT_SIZE(RadiosityConstants, 64);
+
+// A radiosity probe: L1 spherical harmonics of its incoming radiance, one float4 per colour
+// channel, (L00, L1 along x, y, z) of the real SH basis, and its surface normal. A probe on no
+// surface is all zero (normalAndValid.w = 0).
+struct RadiosityProbe {
+    float4 r;
+    float4 g;
+    float4 b;
+    float4 normalAndValid; // xyz: unit world normal of the probe's texel; w: 1 on a surface
+};
+LUMINA_STATIC_ASSERT_SIZE(RadiosityProbe, 64);
+
+LUMINA_GPU_NAMESPACE_END
+
+#endif

@@ -1,0 +1,81 @@
+// lumina-kernel: cs inject
+// lumina-kernel: cs resolve
+// Voxel lighting (gi/surface_cache/voxel_lighting_pass.h): a 64^3 RGBA16F volume of the final
+// layer's outgoing radiance over the scene bounds, the low-frequency fallback for ray hits
+// far from the camera (and the radiance radiosity rays read).
+//   inject:  one thread per texel of the listed tiles; a captured texel adds its radiance to
+//            the voxel holding its world position (fixed-point atomics: RGBA16F has none).
+//            A texel buried in geometry (the floor under a block, the block's face on the floor:
+//            the global SDF is negative just in front of it) is seen by nothing and adds nothing,
+//            or it would darken the visible surfaces that share its voxels.
+//   resolve: one thread per voxel; rgb = mean radiance of the texels it received, a = 1 where
+//            it received any (coverage, which the lookup weights by), then zeroes the
+//            accumulator for the next update.
+#include "sdf/sdf_scene_bindings.hlsli"
+#include "surface_cache/surface_cache_lighting_shared.h"
+#include "surface_cache/surface_card_shared.h"
+
+LUMINA_PUSH_CONSTANTS(VoxelInjectConstants, gConstants);
+Texture2D<float4> gFinal : register(t6);
+Texture2DArray<float4> gSurface : register(t7);
+Texture2D<uint> gTileOwner : register(t8);
+StructuredBuffer<SurfaceCard> gCards : register(t9);
+Texture2D<float> gCaptureDepth : register(t10);
+StructuredBuffer<uint> gTiles : register(t11);
+RWStructuredBuffer<uint> gAccumulator : register(u0); // per voxel: r, g, b (fixed point), texel count
+LUMINA_UAV_FORMAT(rgba16f) RWTexture3D<float4> gVoxels : register(u1);
+
+#define LUMINA_TILE_OWNER gTileOwner
+#define LUMINA_SURFACE_CARD(i) gCards[i]
+#define LUMINA_CAPTURE_DEPTH gCaptureDepth
+#include "surface_cache/surface_cache_texel.hlsli"
+
+[numthreads(64, 1, 1)] void inject(uint3 id : SV_DispatchThreadID) {
+    // x: texel of the tile, y: entry of the tile list.
+    if (id.y >= gConstants.atlas.y || id.x >= LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE) {
+        return;
+    }
+    uint2 texel = tileListTexel(gTiles[id.y], gConstants.atlas.z, id.x);
+    uint card = atlasTexelCard(texel);
+    float4 normal = gSurface.Load(int4(texel, 0, 0));
+    if (card == LUMINA_NO_CARD || normal.a == 0.0f) {
+        return;
+    }
+    float3 world = atlasTexelWorldPosition(gCards[card], texel);
+    if (atlasTexelBuried(world, normalize(normal.xyz), gConstants.buriedProbeDistance.x)) {
+        return;
+    }
+    float3 local = (world - gConstants.grid.minAndVoxelSize.xyz) / gConstants.grid.minAndVoxelSize.w;
+    int3 voxel = int3(floor(local));
+    int3 dims = int3(gConstants.grid.dims.xyz);
+    if (any(voxel < 0) || any(voxel >= dims) || any(isnan(world))) {
+        return;
+    }
+    // The final layer is finite by construction (combine); the clamp keeps the sum in range.
+    float3 radiance = clamp(gFinal.Load(int3(texel, 0)).rgb, 0.0f, LUMINA_VOXEL_MAX_RADIANCE);
+    uint3 fixedPoint = uint3(radiance * LUMINA_VOXEL_FIXED_POINT_SCALE + 0.5f);
+    uint base = 4u * uint(voxel.x + dims.x * (voxel.y + dims.y * voxel.z));
+    uint ignored;
+    InterlockedAdd(gAccumulator[base + 0u], fixedPoint.x, ignored);
+    InterlockedAdd(gAccumulator[base + 1u], fixedPoint.y, ignored);
+    InterlockedAdd(gAccumulator[base + 2u], fixedPoint.z, ignored);
+    InterlockedAdd(gAccumulator[base + 3u], 1u, ignored);
+}
+
+[numthreads(4, 4, 4)] void resolve(uint3 id : SV_DispatchThreadID) {
+    uint3 dims = gConstants.grid.dims.xyz;
+    if (any(id >= dims)) {
+        return;
+    }
+    uint base = 4u * (id.x + dims.x * (id.y + dims.y * id.z));
+    uint count = gAccumulator[base + 3u];
+    float4 value = float4(0.0f, 0.0f, 0.0f, 0.0f);
+    if (count > 0u) {
+        float3 sum = float3(gAccumulator[base + 0u], gAccumulator[base + 1u], gAccumulator[base + 2u]);
+        value = float4(sum / (float(count) * LUMINA_VOXEL_FIXED_POINT_SCALE), 1.0f);
+    }
+    gVoxels[id] = roundToHalf(value);
+    for (uint c = 0u; c < 4u; ++c) {
+        gAccumulator[base + c] = 0u;
+    }
+}
