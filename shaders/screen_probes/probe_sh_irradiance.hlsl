@@ -3,9 +3,13 @@
 // harmonics in world space (9 coefficients per channel; the low-pass that removes the noise the
 // filters left), then irradiance reconstructed from them (negatives clamped) into the probe's
 // bordered full-octahedral tile of the irradiance atlas, for hardware bilinear sampling in the
-// final gather. The map covers the probe's upper hemisphere; below it the radiance counts as 0
-// (the gather weights probes by normal agreement, so it reads the directions that were traced).
-// Texels with no data yet take the probe's mean radiance rather than black.
+// final gather. The map covers the probe's upper hemisphere; below it, and in texels with no data
+// yet, the radiance is taken as the probe's mean radiance M. That leaves the irradiance at the
+// probe normal exactly as the hemisphere alone gives it (in L2, a constant below the tangent plane
+// adds pi M - pi M there), and gives pixels whose normal leans away from the probe's a neutral
+// estimate instead of black. With I_tk the integral of Y_k over texel t and S_k the integral of
+// Y_k over the sphere (2 sqrt(pi) for k = 0, else 0):
+//     c_k = sum_t (L_t - M) I_tk + M S_k.
 // One group per probe: thread t projects texel t, then evaluates tile texels t, t + 64.
 #include "screen_probes/screen_probe_common.hlsli"
 
@@ -34,14 +38,15 @@ groupshared float3 gsSh[LUMINA_SH_COEFFICIENTS];
     for (uint i = 0u; i < LUMINA_SP_PROBE_TEXELS; ++i) {
         mean += gsRadiance[i];
     }
-    const float3 radiance = texel.a > 0.0 ? texel.rgb : (mean.a > 0.0 ? mean.rgb / mean.a : float3(0.0, 0.0, 0.0));
+    const float3 meanRadiance = mean.a > 0.0 ? mean.rgb / mean.a : float3(0.0, 0.0, 0.0);
+    const float3 deviation = texel.a > 0.0 ? texel.rgb - meanRadiance : float3(0.0, 0.0, 0.0);
     const Sh9 integrals = hemiOctTexelShIntegrals(tx, ty, LUMINA_SP_OCT_SIZE, frame);
     for (uint k = 0u; k < LUMINA_SH_COEFFICIENTS; ++k) {
-        gsProjection[t][k] = radiance * integrals.v[k];
+        gsProjection[t][k] = deviation * integrals.v[k];
     }
     GroupMemoryBarrierWithGroupSync();
     if (t < LUMINA_SH_COEFFICIENTS) {
-        float3 c = float3(0.0, 0.0, 0.0);
+        float3 c = t == 0u ? meanRadiance * LUMINA_SH_SPHERE_INTEGRAL_0 : float3(0.0, 0.0, 0.0);
         for (uint i = 0u; i < LUMINA_SP_PROBE_TEXELS; ++i) {
             c += gsProjection[i][t];
         }

@@ -14,6 +14,9 @@
 LUMINA_GPU_NAMESPACE_BEGIN
 
 #define LUMINA_SH_COEFFICIENTS 9u
+// Integral of Y_00 over the sphere, 4 pi x 0.2820948 = 2 sqrt(pi): a constant radiance M projects
+// to M times this in coefficient 0 and to 0 elsewhere.
+#define LUMINA_SH_SPHERE_INTEGRAL_0 3.544907702f
 
 LUMINA_INLINE float shBasis(uint index, float3 d) {
     switch (index) {

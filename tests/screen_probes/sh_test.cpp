@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <numbers>
 #include <random>
+#include <vector>
 
 namespace lumina::test {
 namespace {
@@ -100,6 +101,39 @@ TEST(ShL2, HemisphereMapOfUniformRadianceGivesPiLAtTheProbeNormal) {
         EXPECT_NEAR(irradiance(sh, gpu::probeFrame(n).tangent), 0.5f * kPi * L, 5e-3f * kPi * L);
         EXPECT_NEAR(irradiance(sh, -n), 0.0f, 5e-3f * kPi * L);
     }
+}
+
+// The lower-hemisphere fill of probe_sh_irradiance (c_k = sum_t (L_t - M) I_tk + M S_k): any
+// hemisphere radiance keeps its irradiance at the probe normal, and a direction below the tangent
+// plane sees the probe's mean radiance M.
+TEST(ShL2, MeanFillBelowTheProbeKeepsTheIrradianceAtItsNormal) {
+    std::mt19937 rng(8);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    const float3 n = glm::normalize(float3(0.2f, 0.9f, -0.4f));
+    const gpu::ProbeFrame f = gpu::probeFrame(n);
+    std::vector<float> radiance(LUMINA_SP_OCT_SIZE * LUMINA_SP_OCT_SIZE);
+    float mean = 0.0f, solid = 0.0f;
+    for (uint32_t t = 0; t < radiance.size(); ++t) {
+        radiance[t] = 3.0f * unit(rng);
+        const float a =
+            gpu::hemiOctTexelSolidAngle(t % LUMINA_SP_OCT_SIZE, t / LUMINA_SP_OCT_SIZE, LUMINA_SP_OCT_SIZE);
+        mean += radiance[t] * a;
+        solid += a;
+    }
+    mean /= solid;
+    Sh9 hemi{}, filled{};
+    filled.v[0] = mean * LUMINA_SH_SPHERE_INTEGRAL_0;
+    for (uint32_t t = 0; t < radiance.size(); ++t) {
+        const Sh9 in = gpu::hemiOctTexelShIntegrals(t % LUMINA_SP_OCT_SIZE, t / LUMINA_SP_OCT_SIZE,
+                                                    LUMINA_SP_OCT_SIZE, f);
+        for (uint32_t k = 0; k < 9; ++k) {
+            hemi.v[k] += radiance[t] * in.v[k];
+            filled.v[k] += (radiance[t] - mean) * in.v[k];
+        }
+    }
+    EXPECT_NEAR(irradiance(filled, n), irradiance(hemi, n), 2e-3f * irradiance(hemi, n));
+    // Straight below, the hemisphere alone gives (about) nothing; the fill gives pi M there.
+    EXPECT_NEAR(irradiance(filled, -n), kPi * mean + irradiance(hemi, -n), 0.02f * kPi * mean);
 }
 
 } // namespace
