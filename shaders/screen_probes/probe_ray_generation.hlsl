@@ -38,7 +38,12 @@ groupshared float gsLight[LUMINA_SP_PROBE_TEXELS];
         const uint local = fromBrdf ? r : r - brdfRays;
         const uint count = fromBrdf ? brdfRays : gSp.rays.z;
         const float2 u = spSamplePoint(local, count, gSp.screen.z, probe, strategy);
-        const SpTableSample s = spSampleTable(fromBrdf ? brdf : light, u);
+        SpTableSample s; // if/else, not ?: on structs, which HLSL 2021 (DXC) does not take
+        if (fromBrdf) {
+            s = spSampleTable(brdf, u);
+        } else {
+            s = spSampleTable(light, u);
+        }
         const float pBrdf = spTableDensity(gsBrdf[s.texel], s.e, LUMINA_SP_OCT_SIZE);
         const float pLight = spTableDensity(gsLight[s.texel], s.e, LUMINA_SP_OCT_SIZE);
         ProbeRay ray;

@@ -1,7 +1,9 @@
 // The screen-probe gather on the GPU (lavapipe in CI), validation and synchronization validation
 // on: placement against the GBuffer, sky probes skipped by every pass, the white furnace, the
 // bound of temporal accumulation with NaN and Inf injected, and history across camera motion.
+#include "gi/core/camera.h"
 #include "gi/scene/scene_loader.h"
+#include "shaders/common/conventions.h"
 #include "shaders/screen_probes/screen_probe_shared.h"
 #include "tests/rhi/gpu_test_fixture.h"
 #include "tests/screen_probes/screen_probe_harness.h"
@@ -327,6 +329,164 @@ TEST_P(ScreenProbeGpuTest, ScreenHistoryFollowsTheCameraAndRestartsWhereDisocclu
             EXPECT_EQ(after.at("A", x, y), normal.at("A", x, y) > 0.0f ? 1.0f : 0.0f) << x << "," << y;
         }
     }
+}
+
+// The lighting PDF: without history it is uniform in solid angle; from the second frame on it is
+// (1 - floor) x luminance x solid angle of last frame's probe radiance, normalised, plus the floor
+// spread uniformly. Walls are black here and the sky bright, so the table is far from uniform.
+TEST_P(ScreenProbeGpuTest, LightingPdfFollowsLastFramesRadianceAboveAFloor) {
+    LUMINA_REQUIRE_KERNELS();
+    gi::ScreenProbeSettings settings;
+    settings.lightingPdfFloor = 0.2f;
+    ScreenProbeHarness harness(device(), shaders(), cornellWithSky(), kSize, kSize, settings);
+    harness.setSky(glm::vec3(2.0f));
+    harness.fillVoxels([](uint32_t, uint32_t, uint32_t) { return glm::vec4(0.0f, 0.0f, 0.0f, 1.0f); });
+    const gi::ScreenProbeResources& r = harness.probes().resources();
+    std::vector<float> solid(LUMINA_SP_PROBE_TEXELS);
+    float solidTotal = 0.0f;
+    for (uint32_t t = 0; t < solid.size(); ++t) {
+        solid[t] =
+            gpu::hemiOctTexelSolidAngle(t % LUMINA_SP_OCT_SIZE, t / LUMINA_SP_OCT_SIZE, LUMINA_SP_OCT_SIZE);
+        solidTotal += solid[t];
+    }
+    harness.render();
+    const auto probes = harness.read<gpu::ScreenProbe>(r.probes[0]);
+    auto pdf = harness.read<float>(r.lightingPdf);
+    for (uint32_t p = 0; p < r.probeCount; ++p) {
+        if (probes[p].info.x != LUMINA_SP_PROBE_VALID) {
+            continue;
+        }
+        for (uint32_t t = 0; t < LUMINA_SP_PROBE_TEXELS; ++t) {
+            ASSERT_NEAR(pdf[p * LUMINA_SP_PROBE_TEXELS + t], solid[t] / solidTotal, 1e-6f) << "probe " << p;
+        }
+    }
+    const auto history = harness.read<gpu::float4>(r.history[0]);
+    harness.render(); // same camera: every probe finds itself
+    pdf = harness.read<float>(r.lightingPdf);
+    uint32_t skewed = 0;
+    for (uint32_t p = 0; p < r.probeCount; ++p) {
+        if (probes[p].info.x != LUMINA_SP_PROBE_VALID) {
+            continue;
+        }
+        std::vector<float> mass(LUMINA_SP_PROBE_TEXELS, 0.0f);
+        float massTotal = 0.0f, sum = 0.0f, lo = 1.0f, hi = 0.0f;
+        for (uint32_t t = 0; t < LUMINA_SP_PROBE_TEXELS; ++t) {
+            const gpu::float4 h = history[p * LUMINA_SP_PROBE_TEXELS + t];
+            mass[t] = h.w > 0.0f ? gpu::luminance(gpu::float3(h)) * solid[t] : 0.0f;
+            massTotal += mass[t];
+        }
+        for (uint32_t t = 0; t < LUMINA_SP_PROBE_TEXELS; ++t) {
+            const float even = solid[t] / solidTotal;
+            const float expected = massTotal > 0.0f ? 0.8f * mass[t] / massTotal + 0.2f * even : even;
+            const float got = pdf[p * LUMINA_SP_PROBE_TEXELS + t];
+            ASSERT_NEAR(got, expected, 1e-4f * expected + 1e-7f) << "probe " << p << " texel " << t;
+            ASSERT_GE(got, 0.2f * even * (1.0f - 1e-4f)) << "the floor, probe " << p << " texel " << t;
+            sum += got;
+            lo = std::min(lo, got / even);
+            hi = std::max(hi, got / even);
+        }
+        EXPECT_NEAR(sum, 1.0f, 1e-4f) << "probe " << p;
+        skewed += hi > 4.0f * lo;
+    }
+    EXPECT_GT(skewed, 0u) << "probes that see both sky and black walls";
+}
+
+// Probe radiance history: a static camera keeps it (weights follow W' = 0.9 W + 0.1 w exactly);
+// after resetHistory nothing is kept (W' = 0.1 w); after a camera move each probe keeps it exactly
+// when the old probe its position reprojects to lies on its plane, faces its way and is near.
+TEST_P(ScreenProbeGpuTest, ProbeHistoryIsKeptOnTheSameSurfaceAndRejectedWhereProbesMoved) {
+    LUMINA_REQUIRE_KERNELS();
+    ScreenProbeHarness harness(device(), shaders(), cornellWithSky(), kSize, kSize);
+    harness.setSky(glm::vec3(1.0f));
+    harness.fillVoxels([](uint32_t, uint32_t, uint32_t) { return glm::vec4(0.5f, 0.5f, 0.5f, 1.0f); });
+    const gi::ScreenProbeResources& r = harness.probes().resources();
+    const gi::ScreenProbeSettings& settings = harness.probes().settings();
+    struct Frame {
+        std::vector<gpu::ScreenProbe> probes;
+        std::vector<gpu::float4> composite, history;
+    };
+    auto frame = [&] {
+        harness.render();
+        const uint32_t c = harness.probes().current();
+        return Frame{harness.read<gpu::ScreenProbe>(r.probes[c]), harness.read<gpu::float4>(r.frameRadiance),
+                     harness.read<gpu::float4>(r.history[c])};
+    };
+    // kept: W' = 0.9 W + 0.1 w for every texel; rejected: W' = 0.1 w.
+    auto weightsFollow = [&](const Frame& now, uint32_t p, const std::vector<gpu::float4>* old,
+                             uint32_t oldProbe) {
+        for (uint32_t t = 0; t < LUMINA_SP_PROBE_TEXELS; ++t) {
+            const float w = now.composite[p * LUMINA_SP_PROBE_TEXELS + t].w;
+            const float before = old ? (*old)[oldProbe * LUMINA_SP_PROBE_TEXELS + t].w : 0.0f;
+            const float expected =
+                (1.0f - settings.probeHistoryBlend) * before + settings.probeHistoryBlend * w;
+            if (std::abs(now.history[p * LUMINA_SP_PROBE_TEXELS + t].w - expected) >
+                1e-5f * (1.0f + expected)) {
+                return false;
+            }
+        }
+        return true;
+    };
+    const Frame first = frame();
+    Frame second = frame();
+    uint32_t valid = 0;
+    for (uint32_t p = 0; p < r.probeCount; ++p) {
+        if (second.probes[p].info.x == LUMINA_SP_PROBE_VALID) {
+            ++valid;
+            EXPECT_TRUE(weightsFollow(second, p, &first.history, p)) << "static camera, probe " << p;
+        }
+    }
+    ASSERT_GT(valid, 0u);
+    harness.probes().resetHistory();
+    second = frame();
+    for (uint32_t p = 0; p < r.probeCount; ++p) {
+        if (second.probes[p].info.x == LUMINA_SP_PROBE_VALID) {
+            EXPECT_TRUE(weightsFollow(second, p, nullptr, 0)) << "after reset, probe " << p;
+        }
+    }
+    // Move sideways by a third of a cell's world size at the box and up a little.
+    scene::Camera moved = cornellWithSky().camera;
+    const gpu::GpuCamera before = gi::makeGpuCamera(moved, kSize, kSize);
+    moved.position += moved.right() * 13.0f + moved.up * 7.0f;
+    harness.setCamera(moved);
+    const Frame third = frame();
+    uint32_t kept = 0, rejected = 0;
+    for (uint32_t p = 0; p < r.probeCount; ++p) {
+        const gpu::ScreenProbe& probe = third.probes[p];
+        if (probe.info.x != LUMINA_SP_PROBE_VALID) {
+            continue;
+        }
+        // Where this probe's surface was on screen last frame, and the old probe there.
+        const glm::vec4 world(glm::vec3(probe.positionAndDepth), 1.0f);
+        const glm::vec4 clip(glm::dot(before.viewProjRows[0], world), glm::dot(before.viewProjRows[1], world),
+                             glm::dot(before.viewProjRows[2], world),
+                             glm::dot(before.viewProjRows[3], world));
+        const glm::vec2 pixel =
+            glm::vec2(0.5f + 0.5f * clip.x / clip.w, 0.5f - 0.5f * clip.y / clip.w) * float(kSize);
+        bool matches = false;
+        uint32_t oldIndex = 0;
+        if (clip.w > 0.0f && pixel.x >= 0.0f && pixel.y >= 0.0f && pixel.x < kSize && pixel.y < kSize) {
+            oldIndex = uint32_t(pixel.y) / 8 * r.gridWidth + uint32_t(pixel.x) / 8;
+            const gpu::ScreenProbe& old = second.probes[oldIndex];
+            const glm::vec3 offset = glm::vec3(old.positionAndDepth) - glm::vec3(probe.positionAndDepth);
+            const float depth = probe.positionAndDepth.w;
+            const float cell = 8.0f * 2.0f * before.positionAndTanHalfFovY.w * depth / float(kSize);
+            matches =
+                old.info.x == LUMINA_SP_PROBE_VALID &&
+                std::abs(glm::dot(offset, glm::vec3(probe.normal))) <=
+                    settings.historyPlaneTolerance * depth &&
+                glm::dot(glm::vec3(old.normal), glm::vec3(probe.normal)) >= settings.historyNormalTolerance &&
+                glm::length(offset) <= 1.5f * cell;
+        }
+        // Near the tolerances the GPU's rounding may decide either way: accept both there.
+        const bool keptHere = weightsFollow(third, p, &second.history, oldIndex);
+        const bool rejectedHere = weightsFollow(third, p, nullptr, 0);
+        EXPECT_TRUE(matches ? keptHere : rejectedHere)
+            << "probe " << p << (matches ? " should keep" : " should reject");
+        kept += matches && keptHere;
+        rejected += !matches && rejectedHere;
+    }
+    EXPECT_GT(kept, 0u);
+    EXPECT_GT(rejected, 0u);
 }
 
 TEST_P(ScreenProbeGpuTest, BadInputsAreRefusedByName) {
