@@ -489,6 +489,49 @@ TEST_P(ScreenProbeGpuTest, ProbeHistoryIsKeptOnTheSameSurfaceAndRejectedWherePro
     EXPECT_GT(rejected, 0u);
 }
 
+// Direction, end to end: the voxel lighting is red on the box's +x half (the red wall's side, on
+// the image's left) and green on the -x half, the sky black. Floor, ceiling and back wall pixels
+// face neither half, so they see more of the half they stand in: red exceeds green where the
+// surface lies well inside the +x half and the other way round. A flipped ray direction, SH band
+// or octahedral axis breaks this; the furnace cannot see any of those.
+TEST_P(ScreenProbeGpuTest, IrradianceComesFromTheSideTheLightIsOn) {
+    LUMINA_REQUIRE_KERNELS();
+    ScreenProbeHarness harness(device(), shaders(), scene::loadScene("cornell_box_point"), kSize, kSize);
+    const scene::Bounds box = harness.scene().worldBounds();
+    const float centre = 0.5f * (box.min.x + box.max.x), width = box.max.x - box.min.x;
+    const uint32_t dims = harness.voxelDims();
+    const glm::vec3 lo = harness.voxelMin(), hi = harness.voxelMax();
+    harness.fillVoxels([&](uint32_t x, uint32_t, uint32_t) {
+        const float worldX = lo.x + (float(x) + 0.5f) / float(dims) * (hi.x - lo.x);
+        return worldX > centre ? glm::vec4(1.0f, 0.0f, 0.0f, 1.0f) : glm::vec4(0.0f, 1.0f, 0.0f, 1.0f);
+    });
+    for (int i = 0; i < 8; ++i) {
+        harness.render();
+    }
+    const image::Image normal = harness.read(harness.renderer().gbuffer().normal);
+    const image::Image position = harness.read(harness.renderer().gbuffer().position);
+    const image::Image result = harness.read(harness.probes().irradiance());
+    uint32_t checked = 0, right = 0;
+    for (uint32_t y = 0; y < kSize; ++y) {
+        for (uint32_t x = 0; x < kSize; ++x) {
+            const image::Rgb n = normal.rgbAt(x, y);
+            if (normal.at("A", x, y) == 0.0f || std::abs(n.r) > 0.2f) {
+                continue; // sky, or a surface facing one of the halves (side walls, block sides)
+            }
+            const float offset = position.rgbAt(x, y).r - centre;
+            if (std::abs(offset) < 0.25f * width) {
+                continue;
+            }
+            const image::Rgb e = result.rgbAt(x, y);
+            ASSERT_GT(e.r + e.g, 0.0f) << x << "," << y;
+            ++checked;
+            right += (offset > 0.0f) == (e.r > e.g);
+        }
+    }
+    ASSERT_GT(checked, kSize * kSize / 8);
+    EXPECT_GE(right, checked * 98 / 100) << right << " of " << checked;
+}
+
 TEST_P(ScreenProbeGpuTest, BadInputsAreRefusedByName) {
     EXPECT_THROW(gi::ScreenProbeGather(device(), 0, 64), std::invalid_argument);
     gi::ScreenProbeSettings bad;

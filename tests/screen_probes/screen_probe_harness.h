@@ -102,6 +102,9 @@ public:
         return rhi::readBufferAs<T>(device_, *buffer);
     }
 
+    uint32_t voxelDims() const { return voxelDims_; }
+    glm::vec3 voxelMin() const { return voxelMin_; }
+    glm::vec3 voxelMax() const { return voxelMax_; }
     gi::ScreenProbeGather& probes() { return probes_; }
     gi::DeferredRenderer& renderer() { return renderer_; }
     const scene::Scene& scene() const { return scene_; }
