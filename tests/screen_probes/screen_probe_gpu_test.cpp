@@ -2,7 +2,9 @@
 // on: placement against the GBuffer, sky probes skipped by every pass, the white furnace, the
 // bound of temporal accumulation with NaN and Inf injected, and history across camera motion.
 #include "gi/core/camera.h"
+#include "gi/image/exr.h"
 #include "gi/scene/scene_loader.h"
+#include "gi/screen_probes/screen_probe_readback.h"
 #include "shaders/common/conventions.h"
 #include "shaders/screen_probes/screen_probe_shared.h"
 #include "tests/rhi/gpu_test_fixture.h"
@@ -11,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <iostream>
 #include <limits>
 #include <numbers>
@@ -530,6 +533,48 @@ TEST_P(ScreenProbeGpuTest, IrradianceComesFromTheSideTheLightIsOn) {
     }
     ASSERT_GT(checked, kSize * kSize / 8);
     EXPECT_GE(right, checked * 98 / 100) << right << " of " << checked;
+}
+
+// Every intermediate can be read back: the dump writes one EXR per buffer, and what it writes is
+// what the buffers hold (history and the lighting PDF, texel for texel, probe (x, y) at tile (x, y)).
+TEST_P(ScreenProbeGpuTest, DumpWritesEveryIntermediateAsItIs) {
+    LUMINA_REQUIRE_KERNELS();
+    ScreenProbeHarness harness(device(), shaders(), cornellWithSky(), 32, 32);
+    harness.setSky(glm::vec3(1.0f, 0.5f, 0.25f));
+    harness.fillVoxels(
+        [](uint32_t x, uint32_t, uint32_t) { return glm::vec4(0.1f * float(x), 0.2f, 0.3f, 1.0f); });
+    harness.render();
+    harness.render();
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                      ("lumina_screen_probe_dump_" + std::to_string(std::random_device{}()));
+    const auto written = gi::dumpScreenProbeBuffers(device(), harness.probes(), dir);
+    EXPECT_EQ(written.size(), 14u);
+    for (const auto& path : written) {
+        EXPECT_TRUE(std::filesystem::exists(path)) << path;
+    }
+    const gi::ScreenProbeResources& r = harness.probes().resources();
+    const auto history = harness.read<gpu::float4>(r.history[harness.probes().current()]);
+    const auto pdf = harness.read<float>(r.lightingPdf);
+    const image::Image historyImage = image::readExr(dir / "screen_probes_history.exr");
+    const image::Image pdfImage = image::readExr(dir / "screen_probes_lighting_pdf.exr");
+    ASSERT_EQ(historyImage.width(), r.gridWidth * 8);
+    ASSERT_EQ(historyImage.height(), r.gridHeight * 8);
+    const auto probes = harness.read<gpu::ScreenProbe>(r.probes[harness.probes().current()]);
+    uint32_t compared = 0;
+    for (uint32_t p = 0; p < r.probeCount; ++p) {
+        if (probes[p].info.x != LUMINA_SP_PROBE_VALID) {
+            continue;
+        }
+        for (uint32_t t = 0; t < LUMINA_SP_PROBE_TEXELS; ++t) {
+            const uint32_t x = (p % r.gridWidth) * 8 + t % 8, y = (p / r.gridWidth) * 8 + t / 8;
+            ASSERT_EQ(historyImage.at("G", x, y), history[p * 64 + t].y) << p << "," << t;
+            ASSERT_EQ(historyImage.at("A", x, y), history[p * 64 + t].w) << p << "," << t;
+            ASSERT_EQ(pdfImage.at("R", x, y), pdf[p * 64 + t]) << p << "," << t;
+            ++compared;
+        }
+    }
+    EXPECT_GT(compared, 0u);
+    std::filesystem::remove_all(dir);
 }
 
 TEST_P(ScreenProbeGpuTest, BadInputsAreRefusedByName) {
