@@ -12,26 +12,33 @@ StructuredBuffer<ProbeRay> gRays : register(t1);
 StructuredBuffer<float4> gRayRadiance : register(t2);
 RWStructuredBuffer<float4> gRadiance : register(u0); // per texel: rgb mean radiance; a: weight / solid angle
 
+// The probe's rays, loaded once by the group (every texel thread scans all of them): rgb weight x
+// radiance, a weight (0 for a dropped ray); and the texel each landed in.
+groupshared float4 gsRays[LUMINA_SP_MAX_RAYS];
+groupshared uint gsTexels[LUMINA_SP_MAX_RAYS];
+
 [numthreads(LUMINA_SP_PROBE_TEXELS, 1, 1)] void main(uint3 group : SV_GroupID, uint t : SV_GroupIndex) {
     const uint probe = probeIndexOfGroup(group);
     if (probe >= gSp.grid.w || !probeIsValid(gProbes[probe])) {
         return;
     }
     const uint rayCount = gSp.rays.x;
-    float3 sum = float3(0.0, 0.0, 0.0);
-    float weight = 0.0;
-    for (uint r = 0u; r < rayCount; ++r) {
+    for (uint r = t; r < rayCount; r += LUMINA_SP_PROBE_TEXELS) {
         const ProbeRay ray = gRays[probe * rayCount + r];
-        if (ray.info.x != t) {
-            continue;
-        }
         const float3 radiance = gRayRadiance[probe * rayCount + r].rgb;
         const float w = ray.directionAndWeight.w;
-        if (!allFinite3(radiance) || !(w > 0.0) || isinf(w)) {
-            continue;
+        const bool usable = allFinite3(radiance) && w > 0.0 && !isinf(w);
+        gsRays[r] = usable ? float4(w * radiance, w) : float4(0.0, 0.0, 0.0, 0.0);
+        gsTexels[r] = ray.info.x;
+    }
+    GroupMemoryBarrierWithGroupSync();
+    float3 sum = float3(0.0, 0.0, 0.0);
+    float weight = 0.0;
+    for (uint i = 0u; i < rayCount; ++i) {
+        if (gsTexels[i] == t) {
+            sum += gsRays[i].rgb;
+            weight += gsRays[i].a;
         }
-        sum += w * radiance;
-        weight += w;
     }
     const float solidAngle = hemiOctTexelSolidAngle(t % LUMINA_SP_OCT_SIZE, t / LUMINA_SP_OCT_SIZE, LUMINA_SP_OCT_SIZE);
     gRadiance[probe * LUMINA_SP_PROBE_TEXELS + t] =

@@ -12,6 +12,25 @@ RWStructuredBuffer<ProbeRay> gRays : register(u0); // rays.x per probe
 
 groupshared float gsBrdf[LUMINA_SP_PROBE_TEXELS];
 groupshared float gsLight[LUMINA_SP_PROBE_TEXELS];
+// Prefix sums: entry k is the probability of texels 0 .. k - 1 (entry 0 is 0).
+groupshared float gsBrdfCdf[LUMINA_SP_PROBE_TEXELS + 1u];
+groupshared float gsLightCdf[LUMINA_SP_PROBE_TEXELS + 1u];
+
+// The last texel whose CDF start is at most u (texels of probability 0 share their start with
+// the next, so they are passed over), by bisection over the prefix sums.
+uint findTexel(bool brdf, float u) {
+    uint lo = 0u;
+    uint hi = LUMINA_SP_PROBE_TEXELS - 1u;
+    while (lo < hi) {
+        const uint mid = (lo + hi + 1u) / 2u;
+        if ((brdf ? gsBrdfCdf[mid] : gsLightCdf[mid]) <= u) {
+            lo = mid;
+        } else {
+            hi = mid - 1u;
+        }
+    }
+    return lo;
+}
 
 [numthreads(LUMINA_SP_PROBE_TEXELS, 1, 1)] void main(uint3 group : SV_GroupID, uint t : SV_GroupIndex) {
     const uint probe = probeIndexOfGroup(group);
@@ -21,12 +40,15 @@ groupshared float gsLight[LUMINA_SP_PROBE_TEXELS];
     gsBrdf[t] = gBrdfPdf[probe * LUMINA_SP_PROBE_TEXELS + t];
     gsLight[t] = gLightingPdf[probe * LUMINA_SP_PROBE_TEXELS + t];
     GroupMemoryBarrierWithGroupSync();
-    SpTexelTable brdf;
-    SpTexelTable light;
-    for (uint i = 0u; i < LUMINA_SP_PROBE_TEXELS / 4u; ++i) {
-        brdf.p[i] = float4(gsBrdf[4u * i], gsBrdf[4u * i + 1u], gsBrdf[4u * i + 2u], gsBrdf[4u * i + 3u]);
-        light.p[i] = float4(gsLight[4u * i], gsLight[4u * i + 1u], gsLight[4u * i + 2u], gsLight[4u * i + 3u]);
+    if (t == 0u) { // 2 x 64 adds, in the order the CPU reference adds them
+        gsBrdfCdf[0] = 0.0;
+        gsLightCdf[0] = 0.0;
+        for (uint i = 0u; i < LUMINA_SP_PROBE_TEXELS; ++i) {
+            gsBrdfCdf[i + 1u] = gsBrdfCdf[i] + gsBrdf[i];
+            gsLightCdf[i + 1u] = gsLightCdf[i] + gsLight[i];
+        }
     }
+    GroupMemoryBarrierWithGroupSync();
     const ProbeFrame frame = probeFrame(gProbes[probe].normal.xyz);
     const uint rayCount = gSp.rays.x;
     const uint brdfRays = gSp.rays.y;
@@ -38,12 +60,8 @@ groupshared float gsLight[LUMINA_SP_PROBE_TEXELS];
         const uint local = fromBrdf ? r : r - brdfRays;
         const uint count = fromBrdf ? brdfRays : gSp.rays.z;
         const float2 u = spSamplePoint(local, count, gSp.screen.z, probe, strategy);
-        SpTableSample s; // if/else, not ?: on structs, which HLSL 2021 (DXC) does not take
-        if (fromBrdf) {
-            s = spSampleTable(brdf, u);
-        } else {
-            s = spSampleTable(light, u);
-        }
+        const uint k = findTexel(fromBrdf, u.x);
+        const SpTableSample s = spTableSampleAt(k, fromBrdf ? gsBrdfCdf[k] : gsLightCdf[k], fromBrdf ? gsBrdf[k] : gsLight[k], u);
         const float pBrdf = spTableDensity(gsBrdf[s.texel], s.e, LUMINA_SP_OCT_SIZE);
         const float pLight = spTableDensity(gsLight[s.texel], s.e, LUMINA_SP_OCT_SIZE);
         ProbeRay ray;

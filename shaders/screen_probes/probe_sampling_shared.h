@@ -124,10 +124,24 @@ struct SpTableSample {
     float probability; // the texel's table entry
 };
 
-// Inverts the table's CDF with u.x (the remainder places the point across the texel, so the
-// stratification of u.x carries over) and places it along the texel with u.y.
-LUMINA_INLINE SpTableSample spSampleTable(SpTexelTable t, float2 u) {
+// The point u warped into texel k of a table whose CDF before k is `before`: the remainder of u.x
+// within the texel's share places the point across the texel (so the stratification of u.x
+// carries over), u.y along it.
+LUMINA_INLINE SpTableSample spTableSampleAt(uint k, float before, float p, float2 u) {
     const uint n = LUMINA_SP_OCT_SIZE;
+    const float across = p > 0.0f ? min(max((u.x - before) / p, 0.0f), 1.0f) : 0.5f;
+    const float size = 2.0f / float(n);
+    SpTableSample s;
+    s.texel = k;
+    s.probability = p;
+    s.e = float2(-1.0f + size * (float(k % n) + across), -1.0f + size * (float(k / n) + u.y));
+    return s;
+}
+
+// Inverts the table's CDF with u.x by a linear search (the CPU reference; the kernel searches a
+// prefix-sum table in groupshared memory by bisection and finds the same texel: the first whose
+// CDF interval holds u.x, never one of probability 0 unless u.x is past the total).
+LUMINA_INLINE SpTableSample spSampleTable(SpTexelTable t, float2 u) {
     float before = 0.0f;
     float p = 0.0f;
     uint k = 0u;
@@ -139,13 +153,7 @@ LUMINA_INLINE SpTableSample spSampleTable(SpTexelTable t, float2 u) {
         }
         before += p;
     }
-    const float across = p > 0.0f ? min(max((u.x - before) / p, 0.0f), 1.0f) : 0.5f;
-    const float size = 2.0f / float(n);
-    SpTableSample s;
-    s.texel = k;
-    s.probability = p;
-    s.e = float2(-1.0f + size * (float(k % n) + across), -1.0f + size * (float(k / n) + u.y));
-    return s;
+    return spTableSampleAt(k, before, p, u);
 }
 
 LUMINA_GPU_NAMESPACE_END

@@ -12,10 +12,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <numbers>
 #include <random>
 
@@ -575,6 +578,37 @@ TEST_P(ScreenProbeGpuTest, DumpWritesEveryIntermediateAsItIs) {
     }
     EXPECT_GT(compared, 0u);
     std::filesystem::remove_all(dir);
+}
+
+// Not a test: GPU time per pass (median of 10 frames after 3), for docs/screen_probes.md. Run with
+// --gtest_also_run_disabled_tests --gtest_filter='*PrintPassTimes*'; LUMINA_SP_TIMING_SIZE=WxH.
+TEST_P(ScreenProbeGpuTest, DISABLED_PrintPassTimes) {
+    LUMINA_REQUIRE_KERNELS();
+    uint32_t width = 320, height = 180;
+    if (const char* size = std::getenv("LUMINA_SP_TIMING_SIZE")) {
+        std::sscanf(size, "%ux%u", &width, &height);
+    }
+    ScreenProbeHarness harness(device(), shaders(), scene::loadScene("cornell_box_point"), width, height, {},
+                               32);
+    harness.setSky(glm::vec3(0.5f));
+    harness.fillVoxels([](uint32_t, uint32_t, uint32_t) { return glm::vec4(0.5f, 0.5f, 0.5f, 1.0f); });
+    std::map<std::string, std::vector<double>> times;
+    for (int frame = 0; frame < 13; ++frame) {
+        harness.render();
+        for (const rhi::TimerResult& timer : harness.timings()) {
+            if (frame >= 3 && timer.name.rfind("screen probes: ", 0) == 0) {
+                times[timer.name].push_back(timer.milliseconds);
+            }
+        }
+    }
+    std::cout << device().adapter().name << ", " << width << "x" << height << '\n';
+    double total = 0.0;
+    for (auto& [name, ms] : times) {
+        std::sort(ms.begin(), ms.end());
+        total += ms[ms.size() / 2];
+        std::cout << "| " << name << " | " << ms[ms.size() / 2] << " |\n";
+    }
+    std::cout << "| total | " << total << " |\n";
 }
 
 TEST_P(ScreenProbeGpuTest, BadInputsAreRefusedByName) {

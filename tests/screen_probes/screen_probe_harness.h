@@ -89,8 +89,9 @@ public:
         list_->end();
         rhi::IQueue& queue = device_.queue(rhi::QueueType::Graphics);
         queue.waitForValue(queue.submit(*list_));
+        timings_ = list_->timerResults();
         std::vector<std::string> passes;
-        for (const rhi::TimerResult& timer : list_->timerResults()) {
+        for (const rhi::TimerResult& timer : timings_) {
             passes.push_back(timer.name);
         }
         return passes;
@@ -102,6 +103,8 @@ public:
         return rhi::readBufferAs<T>(device_, *buffer);
     }
 
+    // GPU time of every pass of the last frame.
+    const std::vector<rhi::TimerResult>& timings() const { return timings_; }
     uint32_t voxelDims() const { return voxelDims_; }
     glm::vec3 voxelMin() const { return voxelMin_; }
     glm::vec3 voxelMax() const { return voxelMax_; }
@@ -125,6 +128,7 @@ private:
     glm::vec3 voxelMin_{0.0f}, voxelMax_{0.0f};
     glm::vec3 sky_{0.0f};
     bool useVoxels_ = true;
+    std::vector<rhi::TimerResult> timings_;
 };
 
 } // namespace lumina::test
