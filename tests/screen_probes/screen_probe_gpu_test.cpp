@@ -6,6 +6,7 @@
 #include "gi/scene/scene_loader.h"
 #include "gi/screen_probes/screen_probe_readback.h"
 #include "shaders/common/conventions.h"
+#include "shaders/screen_probes/probe_sampling_shared.h"
 #include "shaders/screen_probes/screen_probe_shared.h"
 #include "tests/rhi/gpu_test_fixture.h"
 #include "tests/screen_probes/screen_probe_harness.h"
@@ -578,6 +579,72 @@ TEST_P(ScreenProbeGpuTest, DumpWritesEveryIntermediateAsItIs) {
     }
     EXPECT_GT(compared, 0u);
     std::filesystem::remove_all(dir);
+}
+
+// The MIS directions on the GPU are the CPU reference's (probe_sampling_shared.h: the same
+// low-discrepancy point warped through the same tables, read back), lie in the texel they name,
+// and carry the balance-heuristic weight of both tables; over frames, the BRDF rays fill the
+// texels in proportion to the cosine table.
+TEST_P(ScreenProbeGpuTest, MisDirectionsAreTheTablesWarpedAndCarryTheirWeights) {
+    LUMINA_REQUIRE_KERNELS();
+    ScreenProbeHarness harness(device(), shaders(), cornellWithSky(), 32, 32);
+    harness.setSky(glm::vec3(3.0f));
+    harness.fillVoxels([](uint32_t, uint32_t, uint32_t) { return glm::vec4(0.1f, 0.1f, 0.1f, 1.0f); });
+    const gi::ScreenProbeResources& r = harness.probes().resources();
+    const uint32_t nb = 32, nl = r.raysPerProbe - nb;
+    std::vector<double> brdfHits(LUMINA_SP_PROBE_TEXELS, 0.0);
+    std::vector<float> brdfTable;
+    double brdfRays = 0.0;
+    const uint32_t frames = 24;
+    for (uint32_t frame = 0; frame < frames; ++frame) {
+        harness.render();
+        const auto probes = harness.read<gpu::ScreenProbe>(r.probes[harness.probes().current()]);
+        const auto rays = harness.read<gpu::ProbeRay>(r.rays);
+        const auto brdf = harness.read<float>(r.brdfPdf);
+        const auto light = harness.read<float>(r.lightingPdf);
+        for (uint32_t p = 0; p < r.probeCount; ++p) {
+            if (probes[p].info.x != LUMINA_SP_PROBE_VALID) {
+                continue;
+            }
+            const gpu::ProbeFrame f = gpu::probeFrame(glm::vec3(probes[p].normal));
+            gpu::SpTexelTable tb{}, tl{};
+            for (uint32_t t = 0; t < LUMINA_SP_PROBE_TEXELS; ++t) {
+                tb.p[t / 4][t % 4] = brdf[p * 64 + t];
+                tl.p[t / 4][t % 4] = light[p * 64 + t];
+            }
+            brdfTable.assign(brdf.begin() + p * 64, brdf.begin() + p * 64 + 64);
+            for (uint32_t i = 0; i < r.raysPerProbe; ++i) {
+                const gpu::ProbeRay& ray = rays[p * r.raysPerProbe + i];
+                const bool fromBrdf = i < nb;
+                ASSERT_EQ(ray.info.y, fromBrdf ? uint32_t(LUMINA_SP_STRATEGY_BRDF)
+                                               : uint32_t(LUMINA_SP_STRATEGY_LIGHTING));
+                const glm::vec2 u =
+                    gpu::spSamplePoint(fromBrdf ? i : i - nb, fromBrdf ? nb : nl, frame, p, ray.info.y);
+                const gpu::SpTableSample s = gpu::spSampleTable(fromBrdf ? tb : tl, u);
+                const std::string where = "frame " + std::to_string(frame) + " probe " + std::to_string(p) +
+                                          " ray " + std::to_string(i);
+                ASSERT_EQ(ray.info.x, s.texel) << where;
+                const glm::vec3 local = gpu::worldToProbe(f, glm::vec3(ray.directionAndWeight));
+                ASSERT_NEAR(glm::length(local - gpu::hemiOctDecode(s.e)), 0.0f, 1e-5f) << where;
+                ASSERT_EQ(gpu::octTexelOf(gpu::hemiOctEncode(gpu::hemiOctDecode(s.e)), LUMINA_SP_OCT_SIZE),
+                          s.texel)
+                    << where;
+                const float pb = gpu::spTableDensity(brdf[p * 64 + s.texel], s.e, LUMINA_SP_OCT_SIZE);
+                const float pl = gpu::spTableDensity(light[p * 64 + s.texel], s.e, LUMINA_SP_OCT_SIZE);
+                ASSERT_NEAR(ray.directionAndWeight.w * (float(nb) * pb + float(nl) * pl), 1.0f, 1e-4f)
+                    << where;
+                if (fromBrdf) {
+                    brdfHits[s.texel] += 1.0;
+                    brdfRays += 1.0;
+                }
+            }
+        }
+    }
+    ASSERT_GT(brdfRays, 0.0);
+    for (uint32_t t = 0; t < LUMINA_SP_PROBE_TEXELS; ++t) {
+        const double expected = brdfTable[t] * brdfRays;
+        EXPECT_NEAR(brdfHits[t], expected, 3.0 * std::sqrt(expected) + 1.0) << "texel " << t;
+    }
 }
 
 // Not a test: GPU time per pass (median of 10 frames after 3), for docs/screen_probes.md. Run with
