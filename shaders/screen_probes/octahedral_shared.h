@@ -112,21 +112,30 @@ LUMINA_INLINE uint octTexelOf(float2 e, uint n) {
     return uint(y) * n + uint(x);
 }
 
-// Solid angle of texel (x, y) of an n x n hemi-octahedral map: the Jacobian integrated on a
-// 4 x 4 midpoint grid (exact to about 1e-4 relative at n = 8; the unit test checks the sum 2 pi).
+// Integrals over a texel use a 4 x 4 midpoint grid (solid angles exact to about 1e-4 relative at
+// n = 8; the unit test checks their sum, 2 pi). Sample q (0 .. 15) of texel (x, y) of an n x n map:
 #define LUMINA_SP_TEXEL_QUADRATURE 4u
-LUMINA_INLINE float hemiOctTexelSolidAngle(uint x, uint y, uint n) {
+#define LUMINA_SP_TEXEL_SAMPLES (LUMINA_SP_TEXEL_QUADRATURE * LUMINA_SP_TEXEL_QUADRATURE)
+LUMINA_INLINE float2 octTexelSample(uint x, uint y, uint n, uint q) {
     const float size = 2.0f / float(n);
     const float step = size / float(LUMINA_SP_TEXEL_QUADRATURE);
+    return float2(-1.0f + size * float(x) + step * (float(q % LUMINA_SP_TEXEL_QUADRATURE) + 0.5f),
+                  -1.0f + size * float(y) + step * (float(q / LUMINA_SP_TEXEL_QUADRATURE) + 0.5f));
+}
+
+// Area in e of one quadrature sample.
+LUMINA_INLINE float octTexelSampleArea(uint n) {
+    const float step = 2.0f / float(n * LUMINA_SP_TEXEL_QUADRATURE);
+    return step * step;
+}
+
+// Solid angle of texel (x, y) of an n x n hemi-octahedral map.
+LUMINA_INLINE float hemiOctTexelSolidAngle(uint x, uint y, uint n) {
     float sum = 0.0f;
-    for (uint j = 0u; j < LUMINA_SP_TEXEL_QUADRATURE; ++j) {
-        for (uint i = 0u; i < LUMINA_SP_TEXEL_QUADRATURE; ++i) {
-            const float2 e = float2(-1.0f + size * float(x) + step * (float(i) + 0.5f),
-                                    -1.0f + size * float(y) + step * (float(j) + 0.5f));
-            sum += hemiOctJacobian(e);
-        }
+    for (uint q = 0u; q < LUMINA_SP_TEXEL_SAMPLES; ++q) {
+        sum += hemiOctJacobian(octTexelSample(x, y, n, q));
     }
-    return sum * step * step;
+    return sum * octTexelSampleArea(n);
 }
 
 // A texel of a bordered tile ((n + 2)^2, interior texel (x, y) at (x + 1, y + 1)) to the map
@@ -185,17 +194,12 @@ LUMINA_INLINE Sh9 hemiOctTexelShIntegrals(uint x, uint y, uint n, ProbeFrame f) 
     for (uint k = 0u; k < LUMINA_SH_COEFFICIENTS; ++k) {
         result.v[k] = 0.0f;
     }
-    const float size = 2.0f / float(n);
-    const float step = size / float(LUMINA_SP_TEXEL_QUADRATURE);
-    for (uint j = 0u; j < LUMINA_SP_TEXEL_QUADRATURE; ++j) {
-        for (uint i = 0u; i < LUMINA_SP_TEXEL_QUADRATURE; ++i) {
-            const float2 e = float2(-1.0f + size * float(x) + step * (float(i) + 0.5f),
-                                    -1.0f + size * float(y) + step * (float(j) + 0.5f));
-            const float w = hemiOctJacobian(e) * step * step;
-            const float3 d = probeToWorld(f, hemiOctDecode(e));
-            for (uint k = 0u; k < LUMINA_SH_COEFFICIENTS; ++k) {
-                result.v[k] += w * shBasis(k, d);
-            }
+    for (uint q = 0u; q < LUMINA_SP_TEXEL_SAMPLES; ++q) {
+        const float2 e = octTexelSample(x, y, n, q);
+        const float w = hemiOctJacobian(e) * octTexelSampleArea(n);
+        const float3 d = probeToWorld(f, hemiOctDecode(e));
+        for (uint k = 0u; k < LUMINA_SH_COEFFICIENTS; ++k) {
+            result.v[k] += w * shBasis(k, d);
         }
     }
     return result;

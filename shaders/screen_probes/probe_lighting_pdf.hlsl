@@ -9,8 +9,9 @@
 
 StructuredBuffer<ScreenProbe> gProbes : register(t0);
 StructuredBuffer<ScreenProbe> gPreviousProbes : register(t1);
-StructuredBuffer<float4> gPreviousRadiance : register(t2); // probe_temporal's output of last frame
-RWStructuredBuffer<float> gLightingPdf : register(u0);     // LUMINA_SP_PROBE_TEXELS per probe, summing to 1
+StructuredBuffer<float4> gPreviousHistory : register(t2); // probe_temporal's output of last frame
+RWStructuredBuffer<float> gLightingPdf : register(u0);   // LUMINA_SP_PROBE_TEXELS per probe, summing to 1
+#include "screen_probes/probe_history.hlsli"
 
 groupshared float gsMass[LUMINA_SP_PROBE_TEXELS];
 groupshared float gsSolidAngle[LUMINA_SP_PROBE_TEXELS];
@@ -24,18 +25,10 @@ groupshared float gsSolidAngle[LUMINA_SP_PROBE_TEXELS];
     const ProbeFrame frame = probeFrame(current.normal.xyz);
     const float solidAngle = hemiOctTexelSolidAngle(t % LUMINA_SP_OCT_SIZE, t / LUMINA_SP_OCT_SIZE, LUMINA_SP_OCT_SIZE);
 
-    float mass = 0.0;
-    const int candidate = historyProbeCandidate(current.positionAndDepth.xyz);
-    if (candidate >= 0 && historyMatches(current, gPreviousProbes[candidate])) {
-        const ProbeFrame old = probeFrame(gPreviousProbes[candidate].normal.xyz);
-        const int texel = texelInFrame(old, texelDirection(frame, t));
-        if (texel >= 0) {
-            const float4 radiance = gPreviousRadiance[uint(candidate) * LUMINA_SP_PROBE_TEXELS + uint(texel)];
-            const float l = luminance(radiance.rgb);
-            // History is sanitised when written; the check keeps a bad table from sampling nothing.
-            mass = radiance.a > 0.0 && l > 0.0 && !isinf(l) ? l * solidAngle : 0.0;
-        }
-    }
+    const float4 radiance = historyTexel(current, frame, t);
+    const float l = luminance(radiance.rgb);
+    // History is sanitised when written; the check keeps a bad table from sampling nothing.
+    const float mass = radiance.a > 0.0 && l > 0.0 && !isinf(l) ? l * solidAngle : 0.0;
     gsMass[t] = mass;
     gsSolidAngle[t] = solidAngle;
     GroupMemoryBarrierWithGroupSync();

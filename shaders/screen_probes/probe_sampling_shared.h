@@ -105,17 +105,12 @@ LUMINA_INLINE float spTableAt(SpTexelTable t, uint i) {
 // Probability mass of texel (x, y) of an n x n hemi-octahedral map under the cosine-weighted
 // hemisphere (pdf cos / pi): the same 4 x 4 quadrature as hemiOctTexelSolidAngle.
 LUMINA_INLINE float hemiOctTexelCosineMass(uint x, uint y, uint n) {
-    const float size = 2.0f / float(n);
-    const float step = size / float(LUMINA_SP_TEXEL_QUADRATURE);
     float sum = 0.0f;
-    for (uint j = 0u; j < LUMINA_SP_TEXEL_QUADRATURE; ++j) {
-        for (uint i = 0u; i < LUMINA_SP_TEXEL_QUADRATURE; ++i) {
-            const float2 e = float2(-1.0f + size * float(x) + step * (float(i) + 0.5f),
-                                    -1.0f + size * float(y) + step * (float(j) + 0.5f));
-            sum += hemiOctJacobian(e) * hemiOctDecode(e).z;
-        }
+    for (uint q = 0u; q < LUMINA_SP_TEXEL_SAMPLES; ++q) {
+        const float2 e = octTexelSample(x, y, n, q);
+        sum += hemiOctJacobian(e) * hemiOctDecode(e).z;
     }
-    return sum * step * step * (1.0f / LUMINA_SP_PI);
+    return sum * octTexelSampleArea(n) * (1.0f / LUMINA_SP_PI);
 }
 
 struct SpTableSample {

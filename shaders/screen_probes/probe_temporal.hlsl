@@ -15,6 +15,7 @@ StructuredBuffer<ScreenProbe> gPreviousProbes : register(t1);
 StructuredBuffer<float4> gFrameRadiance : register(t2);    // probe_composite's output
 StructuredBuffer<float4> gPreviousHistory : register(t3);  // this pass's output last frame
 RWStructuredBuffer<float4> gHistory : register(u0);
+#include "screen_probes/probe_history.hlsli"
 
 groupshared float gsLuminance[LUMINA_SP_PROBE_TEXELS];
 groupshared float gsSolidAngle[LUMINA_SP_PROBE_TEXELS];
@@ -26,14 +27,7 @@ groupshared float gsSolidAngle[LUMINA_SP_PROBE_TEXELS];
     }
     const ScreenProbe current = gProbes[probe];
     const ProbeFrame frame = probeFrame(current.normal.xyz);
-    float4 history = float4(0.0, 0.0, 0.0, 0.0);
-    const int candidate = historyProbeCandidate(current.positionAndDepth.xyz);
-    if (candidate >= 0 && historyMatches(current, gPreviousProbes[candidate])) {
-        const int texel = texelInFrame(probeFrame(gPreviousProbes[candidate].normal.xyz), texelDirection(frame, t));
-        if (texel >= 0) {
-            history = gPreviousHistory[uint(candidate) * LUMINA_SP_PROBE_TEXELS + uint(texel)];
-        }
-    }
+    const float4 history = historyTexel(current, frame, t);
     const float solidAngle = hemiOctTexelSolidAngle(t % LUMINA_SP_OCT_SIZE, t / LUMINA_SP_OCT_SIZE, LUMINA_SP_OCT_SIZE);
     gsLuminance[t] = history.a > 0.0 ? luminance(history.rgb) * solidAngle : 0.0;
     gsSolidAngle[t] = history.a > 0.0 ? solidAngle : 0.0;
