@@ -35,6 +35,10 @@ ScreenProbeGather::ScreenProbeGather(rhi::IDevice& device, uint32_t width, uint3
                                      ScreenProbeSettings settings)
     : settings_(settings), resources_(ScreenProbeResources::create(device, width, height, settings)) {}
 
+uint32_t ScreenProbeGather::brdfRays() const {
+    return uint32_t(std::lround(float(resources_.raysPerProbe) * settings_.brdfRayFraction));
+}
+
 void ScreenProbeGather::uploadConstants(rhi::ICommandList& commands, const ScreenProbeInputs& inputs,
                                         const gpu::GpuCamera& camera) {
     const ScreenProbeResources& r = resources_;
@@ -44,7 +48,7 @@ void ScreenProbeGather::uploadConstants(rhi::ICommandList& commands, const Scree
         glm::vec3(sdf.globalMaxAndMaxDistance) - glm::vec3(sdf.globalMinAndVoxelSize);
     const float maxDistance =
         settings_.maxTraceDistance > 0.0f ? settings_.maxTraceDistance : glm::length(gridExtent);
-    const auto brdfRays = uint32_t(std::lround(float(r.raysPerProbe) * settings_.brdfRayFraction));
+    const uint32_t brdfRays = this->brdfRays();
 
     uint32_t flags = 0;
     if (previousCamera_) {
@@ -96,8 +100,17 @@ void ScreenProbeGather::record(FrameContext& frame, const ScreenProbeInputs& inp
                                                                              : resources_.noVoxelLighting,
                                .current = current_};
     placement_.record(frame, view);
-    brdfPdf_.record(frame, view);
-    lightingPdf_.record(frame, view);
+    // A strategy that draws no rays needs no table (spMisWeight leaves it out).
+    if (brdfRays() > 0) {
+        brdfPdf_.record(frame, view);
+    } else {
+        frame.skip(ProbeBrdfPdfPass::kName, "no BRDF rays (brdfRayFraction 0)");
+    }
+    if (brdfRays() < resources_.raysPerProbe) {
+        lightingPdf_.record(frame, view);
+    } else {
+        frame.skip(ProbeLightingPdfPass::kName, "no lighting rays (brdfRayFraction 1)");
+    }
     rayGeneration_.record(frame, view);
     traceFarField_.record(frame, view);
     rayShading_.record(frame, view);

@@ -70,6 +70,8 @@ public:
     // The ping-pong half this frame wrote (probes, history, screen irradiance and positions).
     uint32_t current() const { return current_; }
     uint64_t framesRecorded() const { return frames_; }
+    // Rays per probe drawn from the BRDF table; the rest come from the lighting table.
+    uint32_t brdfRays() const;
 
 private:
     void uploadConstants(rhi::ICommandList& commands, const ScreenProbeInputs& inputs,

@@ -38,9 +38,13 @@ inline uint sp_reversebits(uint v) {
 
 LUMINA_GPU_NAMESPACE_BEGIN
 
-// Plastic-number constants of the R2 sequence: 1 / phi2, 1 / phi2^2.
-#define LUMINA_SP_R2_A1 0.754877666246693f
-#define LUMINA_SP_R2_A2 0.569840290998053f
+// The R2 sequence's plastic-number constants 1 / phi2 and 1 / phi2^2 in 32-bit fixed point
+// (x 2^32): frame x constant then wraps exactly modulo 1, so the rotation keeps its 24 bits of
+// precision however many frames have run (float(frame) x 0.75 would lose them past 2^16 frames).
+#define LUMINA_SP_R2_A1_FIXED 3242174889u
+#define LUMINA_SP_R2_A2_FIXED 2447445414u
+// 2^-24: the top 24 bits of a 32-bit fraction to [0, 1) exactly.
+#define LUMINA_SP_UINT24_TO_UNIT 5.9604644775390625e-8f
 // 2^-32 as a float: a 32-bit radical inverse to [0, 1).
 #define LUMINA_SP_UINT32_TO_UNIT 2.3283064365386963e-10f
 
@@ -56,9 +60,11 @@ LUMINA_INLINE float2 spHammersley(uint i, uint n) {
 
 // The rotation of frame `frame` for probe `probe` and strategy `strategy`.
 LUMINA_INLINE float2 spRotation(uint frame, uint probe, uint strategy) {
-    const uint h = spHash(probe * 2u + strategy);
-    return float2(LUMINA_SP_FRAC(float(h & 0xFFFFu) * (1.0f / 65536.0f) + LUMINA_SP_R2_A1 * float(frame)),
-                  LUMINA_SP_FRAC(float(h >> 16u) * (1.0f / 65536.0f) + LUMINA_SP_R2_A2 * float(frame)));
+    const uint hx = spHash(probe * 2u + strategy);
+    const uint hy = spHash(hx);
+    const uint x = hx + frame * LUMINA_SP_R2_A1_FIXED; // wraps: a fraction in 32-bit fixed point
+    const uint y = hy + frame * LUMINA_SP_R2_A2_FIXED;
+    return float2(float(x >> 8u) * LUMINA_SP_UINT24_TO_UNIT, float(y >> 8u) * LUMINA_SP_UINT24_TO_UNIT);
 }
 
 LUMINA_INLINE float2 spSamplePoint(uint i, uint n, uint frame, uint probe, uint strategy) {
@@ -82,7 +88,8 @@ LUMINA_INLINE float spTableDensity(float p, float2 e, uint n) {
 // The multi-sample balance-heuristic weight of a ray (see above); 0 where neither strategy can
 // produce it.
 LUMINA_INLINE float spMisWeight(float nBrdf, float pBrdf, float nLight, float pLight) {
-    const float sum = nBrdf * pBrdf + nLight * pLight;
+    // A strategy that draws no rays is left out, table and all (its pass may not have run).
+    const float sum = (nBrdf > 0.0f ? nBrdf * pBrdf : 0.0f) + (nLight > 0.0f ? nLight * pLight : 0.0f);
     return sum > 0.0f ? 1.0f / sum : 0.0f;
 }
 

@@ -196,6 +196,17 @@ TEST(ProbeSampling, BrdfTableSamplesFollowTheCosineTableDensity) {
     EXPECT_NEAR(expected, 2.0 / 3.0, 0.03 * 2.0 / 3.0);
 }
 
+// The per-frame rotation is the R2 sequence, exact modulo 1 at any frame count: consecutive
+// frames step by (0.7549, 0.5698) mod 1 at frame 10 as at frame 2^31.
+TEST(ProbeSampling, FrameRotationStaysTheR2StepAfterBillionsOfFrames) {
+    for (const uint32_t frame : {10u, 1u << 20, 1u << 31}) {
+        const float2 a = gpu::spRotation(frame, 4u, 1u), b = gpu::spRotation(frame + 1, 4u, 1u);
+        const auto step = [](float from, float to) { return to - from + (to < from ? 1.0f : 0.0f); };
+        EXPECT_NEAR(step(a.x, b.x), 0.7548777f, 1e-6f) << "frame " << frame;
+        EXPECT_NEAR(step(a.y, b.y), 0.5698403f, 1e-6f) << "frame " << frame;
+    }
+}
+
 TEST(ProbeSampling, JitterChangesEveryFrameAndProbeButStaysInTheUnitSquare) {
     for (uint32_t frame = 0; frame < 100; ++frame) {
         const float2 a = gpu::spRotation(frame, 5u, 0u), b = gpu::spRotation(frame + 1, 5u, 0u);

@@ -647,6 +647,44 @@ TEST_P(ScreenProbeGpuTest, MisDirectionsAreTheTablesWarpedAndCarryTheirWeights) 
     }
 }
 
+// One strategy only: the other's table is not made (its pass is skipped with the reason) and the
+// furnace still gives pi L, so the weights leave the unused table out.
+TEST_P(ScreenProbeGpuTest, AStrategyWithoutRaysSkipsItsTable) {
+    LUMINA_REQUIRE_KERNELS();
+    for (const float fraction : {0.0f, 1.0f}) {
+        gi::ScreenProbeSettings settings;
+        settings.brdfRayFraction = fraction;
+        const glm::vec3 L(0.4f);
+        ScreenProbeHarness harness(device(), shaders(), scene::loadScene("cornell_box_point"), 32, 32,
+                                   settings);
+        harness.setSky(L);
+        harness.fillVoxels([&](uint32_t, uint32_t, uint32_t) { return glm::vec4(L, 1.0f); });
+        const std::vector<std::string> passes = harness.render();
+        const std::string skippedPass =
+            fraction == 0.0f ? gi::ProbeBrdfPdfPass::kName : gi::ProbeLightingPdfPass::kName;
+        const std::string reason =
+            fraction == 0.0f ? "no BRDF rays (brdfRayFraction 0)" : "no lighting rays (brdfRayFraction 1)";
+        EXPECT_EQ(std::count(passes.begin(), passes.end(), skippedPass), 0) << skippedPass;
+        std::vector<gi::SkippedPass> ours; // the deferred renderer skips its sun shadow too
+        std::copy_if(harness.skipped().begin(), harness.skipped().end(), std::back_inserter(ours),
+                     [](const gi::SkippedPass& skip) { return skip.pass.rfind("screen probes: ", 0) == 0; });
+        ASSERT_EQ(ours.size(), 1u);
+        EXPECT_EQ(ours[0].pass, skippedPass);
+        EXPECT_EQ(ours[0].reason, reason);
+        harness.render();
+        const image::Image normal = harness.read(harness.renderer().gbuffer().normal);
+        const image::Image result = harness.read(harness.probes().irradiance());
+        for (uint32_t y = 0; y < 32; ++y) {
+            for (uint32_t x = 0; x < 32; ++x) {
+                if (normal.at("A", x, y) > 0.0f) {
+                    ASSERT_NEAR(result.rgbAt(x, y).g, kPi * L.y, 0.005f * kPi * L.y)
+                        << fraction << " at " << x << "," << y;
+                }
+            }
+        }
+    }
+}
+
 // Not a test: GPU time per pass (median of 10 frames after 3), for docs/screen_probes.md. Run with
 // --gtest_also_run_disabled_tests --gtest_filter='*PrintPassTimes*'; LUMINA_SP_TIMING_SIZE=WxH.
 TEST_P(ScreenProbeGpuTest, DISABLED_PrintPassTimes) {

@@ -87,6 +87,7 @@ public:
                                .sky = sky_,
                                .voxelLighting = {useVoxels_ ? voxels_ : nullptr, voxelMin_, voxelMax_}});
         list_->end();
+        skipped_ = frame.skipped();
         rhi::IQueue& queue = device_.queue(rhi::QueueType::Graphics);
         queue.waitForValue(queue.submit(*list_));
         timings_ = list_->timerResults();
@@ -103,6 +104,8 @@ public:
         return rhi::readBufferAs<T>(device_, *buffer);
     }
 
+    // The passes the last frame skipped, and why.
+    const std::vector<gi::SkippedPass>& skipped() const { return skipped_; }
     // GPU time of every pass of the last frame.
     const std::vector<rhi::TimerResult>& timings() const { return timings_; }
     uint32_t voxelDims() const { return voxelDims_; }
@@ -129,6 +132,7 @@ private:
     glm::vec3 sky_{0.0f};
     bool useVoxels_ = true;
     std::vector<rhi::TimerResult> timings_;
+    std::vector<gi::SkippedPass> skipped_;
 };
 
 } // namespace lumina::test
