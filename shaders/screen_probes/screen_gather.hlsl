@@ -4,8 +4,8 @@
 // max(0, n . n_probe)^filter.y, so a pixel reads probes on its own surface; each probe's tile of
 // the irradiance atlas is sampled (hardware bilinear, the border makes it seamless) in the pixel's
 // normal direction. Where no probe passes, the bilinear weights of the valid ones alone are used.
-// Sky pixels get none. One thread per pixel; output irradiance (W/m^2-like units: pi x radiance for
-// a uniform environment).
+// Sky pixels get none. One thread per pixel; output irradiance, in the scene's radiance units x
+// steradian (pi L under a uniform radiance L).
 #include "screen_probes/screen_probe_common.hlsli"
 
 Texture2D<float4> gNormal : register(t0);
