@@ -51,10 +51,6 @@ int historyProbeCandidate(float3 world) {
     return int(cell.y * gSp.grid.x + cell.x);
 }
 
-// Cells a history probe may lie from the new one: the old cell centre is up to half a cell's
-// diagonal from where the surface reprojects, plus a pixel of rounding.
-#define LUMINA_SP_HISTORY_MAX_CELLS 1.5
-
 // Whether the old probe saw the same surface: valid, on the new probe's plane (within
 // filter.z x view depth), facing the same way (cosine at least filter.w) and within
 // LUMINA_SP_HISTORY_MAX_CELLS cells' world size of it. A probe that moved in world space

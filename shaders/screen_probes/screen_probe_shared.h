@@ -21,6 +21,10 @@ LUMINA_GPU_NAMESPACE_BEGIN
 // Thread-group edge of the full-resolution passes.
 #define LUMINA_SP_SCREEN_GROUP 8u
 
+// Cells (in world size at the probe's depth) a history probe may lie from the new one: the old
+// cell centre is up to half a cell's diagonal from where the surface reprojects, plus rounding.
+#define LUMINA_SP_HISTORY_MAX_CELLS 1.5f
+
 // ScreenProbe::info.x
 #define LUMINA_SP_PROBE_VALID 1u
 // ScreenProbeConstants::screen.w

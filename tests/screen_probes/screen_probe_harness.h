@@ -8,6 +8,7 @@
 #include "gi/deferred/deferred_renderer.h"
 #include "gi/gpu_scene/gpu_scene.h"
 #include "gi/scene/scene.h"
+#include "gi/scene/scene_loader.h"
 #include "gi/screen_probes/screen_probe_gather.h"
 #include "gi/sdf/scene_sdf.h"
 #include "gi/sdf/sdf_atlas.h"
@@ -18,6 +19,16 @@
 #include <vector>
 
 namespace lumina::test {
+
+constexpr uint32_t kSize = 64; // image edge of most screen-probe GPU tests: an 8 x 8 probe grid
+constexpr float kPi = 3.14159265358979f;
+
+// cornell_box_point seen from farther back: the box fills the middle, the sky the rest.
+inline scene::Scene cornellWithSky() {
+    scene::Scene scene = scene::loadScene("cornell_box_point");
+    scene.camera.position -= scene.camera.forward * 900.0f;
+    return scene;
+}
 
 class ScreenProbeHarness {
 public:
