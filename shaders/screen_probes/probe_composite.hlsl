@@ -40,7 +40,7 @@ groupshared uint gsTexels[LUMINA_SP_MAX_RAYS];
             weight += gsRays[i].a;
         }
     }
-    const float solidAngle = hemiOctTexelSolidAngle(t % LUMINA_SP_OCT_SIZE, t / LUMINA_SP_OCT_SIZE, LUMINA_SP_OCT_SIZE);
+    const float solidAngle = texelSolidAngle(t);
     gRadiance[probe * LUMINA_SP_PROBE_TEXELS + t] =
         weight > 0.0 ? float4(sum / weight, weight / solidAngle) : float4(0.0, 0.0, 0.0, 0.0);
 }

@@ -23,7 +23,7 @@ groupshared float gsSolidAngle[LUMINA_SP_PROBE_TEXELS];
     }
     const ScreenProbe current = gProbes[probe];
     const ProbeFrame frame = probeFrame(current.normal.xyz);
-    const float solidAngle = hemiOctTexelSolidAngle(t % LUMINA_SP_OCT_SIZE, t / LUMINA_SP_OCT_SIZE, LUMINA_SP_OCT_SIZE);
+    const float solidAngle = texelSolidAngle(t);
 
     const float4 radiance = historyTexel(current, frame, t);
     const float l = luminance(radiance.rgb);

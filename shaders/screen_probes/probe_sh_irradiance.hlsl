@@ -31,7 +31,7 @@ groupshared float3 gsSh[LUMINA_SH_COEFFICIENTS];
     const uint tx = t % LUMINA_SP_OCT_SIZE;
     const uint ty = t / LUMINA_SP_OCT_SIZE;
     const float4 texel = gFiltered[probe * LUMINA_SP_PROBE_TEXELS + t];
-    const float solidAngle = hemiOctTexelSolidAngle(tx, ty, LUMINA_SP_OCT_SIZE);
+    const float solidAngle = texelSolidAngle(t);
     gsRadiance[t] = texel.a > 0.0 ? float4(texel.rgb * solidAngle, solidAngle) : float4(0.0, 0.0, 0.0, 0.0);
     GroupMemoryBarrierWithGroupSync();
     float4 mean = float4(0.0, 0.0, 0.0, 0.0);

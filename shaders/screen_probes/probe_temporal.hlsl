@@ -28,7 +28,7 @@ groupshared float gsSolidAngle[LUMINA_SP_PROBE_TEXELS];
     const ScreenProbe current = gProbes[probe];
     const ProbeFrame frame = probeFrame(current.normal.xyz);
     const float4 history = historyTexel(current, frame, t);
-    const float solidAngle = hemiOctTexelSolidAngle(t % LUMINA_SP_OCT_SIZE, t / LUMINA_SP_OCT_SIZE, LUMINA_SP_OCT_SIZE);
+    const float solidAngle = texelSolidAngle(t);
     gsLuminance[t] = history.a > 0.0 ? luminance(history.rgb) * solidAngle : 0.0;
     gsSolidAngle[t] = history.a > 0.0 ? solidAngle : 0.0;
     GroupMemoryBarrierWithGroupSync();

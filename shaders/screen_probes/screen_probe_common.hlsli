@@ -77,6 +77,11 @@ int texelInFrame(ProbeFrame f, float3 d) {
     return int(octTexelOf(hemiOctEncode(local), LUMINA_SP_OCT_SIZE));
 }
 
+// Solid angle of texel t of a probe's map (the same for every probe: the map is in its frame).
+float texelSolidAngle(uint t) {
+    return hemiOctTexelSolidAngle(t % LUMINA_SP_OCT_SIZE, t / LUMINA_SP_OCT_SIZE, LUMINA_SP_OCT_SIZE);
+}
+
 // World direction of the centre of texel t of a probe's map.
 float3 texelDirection(ProbeFrame f, uint t) {
     const float2 e = octTexelCentre(t % LUMINA_SP_OCT_SIZE, t / LUMINA_SP_OCT_SIZE, LUMINA_SP_OCT_SIZE);
