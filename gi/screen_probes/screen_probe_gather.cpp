@@ -104,12 +104,14 @@ void ScreenProbeGather::record(FrameContext& frame, const ScreenProbeInputs& inp
     if (brdfRays() > 0) {
         brdfPdf_.record(frame, view);
     } else {
-        frame.skip(ProbeBrdfPdfPass::kName, "no BRDF rays (brdfRayFraction 0)");
+        frame.skip(ProbeBrdfPdfPass::kName,
+                   "no BRDF rays: all " + std::to_string(resources_.raysPerProbe) + " from the lighting PDF");
     }
     if (brdfRays() < resources_.raysPerProbe) {
         lightingPdf_.record(frame, view);
     } else {
-        frame.skip(ProbeLightingPdfPass::kName, "no lighting rays (brdfRayFraction 1)");
+        frame.skip(ProbeLightingPdfPass::kName,
+                   "no lighting rays: all " + std::to_string(resources_.raysPerProbe) + " from the BRDF PDF");
     }
     rayGeneration_.record(frame, view);
     traceFarField_.record(frame, view);

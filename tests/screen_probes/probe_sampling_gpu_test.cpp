@@ -168,8 +168,8 @@ TEST_P(ProbeSamplingGpuTest, AStrategyWithoutRaysSkipsItsTable) {
         const std::vector<std::string> passes = harness.render();
         const std::string skippedPass =
             fraction == 0.0f ? gi::ProbeBrdfPdfPass::kName : gi::ProbeLightingPdfPass::kName;
-        const std::string reason =
-            fraction == 0.0f ? "no BRDF rays (brdfRayFraction 0)" : "no lighting rays (brdfRayFraction 1)";
+        const std::string reason = fraction == 0.0f ? "no BRDF rays: all 64 from the lighting PDF"
+                                                    : "no lighting rays: all 64 from the BRDF PDF";
         EXPECT_EQ(std::count(passes.begin(), passes.end(), skippedPass), 0) << skippedPass;
         std::vector<gi::SkippedPass> ours; // the deferred renderer skips its sun shadow too
         std::copy_if(harness.skipped().begin(), harness.skipped().end(), std::back_inserter(ours),
