@@ -61,11 +61,13 @@ uint findTexel(bool brdf, float u) {
         const uint count = fromBrdf ? brdfRays : gSp.rays.z;
         const float2 u = spSamplePoint(local, count, gSp.screen.z, probe, strategy);
         const uint k = findTexel(fromBrdf, u.x);
-        const SpTableSample s = spTableSampleAt(k, fromBrdf ? gsBrdfCdf[k] : gsLightCdf[k], fromBrdf ? gsBrdf[k] : gsLight[k], u);
+        const float before = fromBrdf ? gsBrdfCdf[k] : gsLightCdf[k];
+        const SpTableSample s = spTableSampleAt(k, before, fromBrdf ? gsBrdf[k] : gsLight[k], u);
         const float pBrdf = spTableDensity(gsBrdf[s.texel], s.e, LUMINA_SP_OCT_SIZE);
         const float pLight = spTableDensity(gsLight[s.texel], s.e, LUMINA_SP_OCT_SIZE);
         ProbeRay ray;
-        ray.directionAndWeight = float4(probeToWorld(frame, hemiOctDecode(s.e)), spMisWeight(nBrdf, pBrdf, nLight, pLight));
+        const float3 direction = probeToWorld(frame, hemiOctDecode(s.e));
+        ray.directionAndWeight = float4(direction, spMisWeight(nBrdf, pBrdf, nLight, pLight));
         ray.info = uint4(s.texel, strategy, 1u, 0u);
         gRays[probe * rayCount + r] = ray;
     }

@@ -16,7 +16,8 @@
 StructuredBuffer<ScreenProbe> gProbes : register(t0);
 StructuredBuffer<float4> gFiltered : register(t1);
 RWStructuredBuffer<float4> gSh : register(u0); // LUMINA_SH_COEFFICIENTS per probe: rgb per coefficient
-LUMINA_UAV_FORMAT(rgba16f) RWTexture2D<float4> gIrradiance : register(u1); // tiles of LUMINA_SP_IRRADIANCE_TILE^2
+// Tiles of LUMINA_SP_IRRADIANCE_TILE^2 texels, probe (x, y) at tile (x, y).
+LUMINA_UAV_FORMAT(rgba16f) RWTexture2D<float4> gIrradiance : register(u1);
 
 groupshared float3 gsProjection[LUMINA_SP_PROBE_TEXELS][LUMINA_SH_COEFFICIENTS];
 groupshared float4 gsRadiance[LUMINA_SP_PROBE_TEXELS]; // rgb x solid angle; a: solid angle where known

@@ -32,7 +32,8 @@ RWStructuredBuffer<float4> gFiltered : register(u0); // rgb: radiance; a: 1 wher
         if (!probeIsValid(neighbour)) {
             continue;
         }
-        const float planeDistance = abs(dot(neighbour.positionAndDepth.xyz - centre.positionAndDepth.xyz, centre.normal.xyz));
+        const float3 offset = neighbour.positionAndDepth.xyz - centre.positionAndDepth.xyz;
+        const float planeDistance = abs(dot(offset, centre.normal.xyz));
         const float w = exp(-planeDistance / (gSp.filter.x * centre.positionAndDepth.w)) *
                         pow(saturate(dot(neighbour.normal.xyz, centre.normal.xyz)), gSp.filter.y);
         const int texel = texelInFrame(probeFrame(neighbour.normal.xyz), direction);

@@ -29,8 +29,9 @@ bool allFinite3(float3 v) {
 // World position to a pixel position of the previous frame's camera; false behind it or off screen.
 bool previousPixel(float3 world, out float2 pixel) {
     const float4 p = float4(world, 1.0);
-    const float4 clip = float4(dot(gSp.previousCamera.viewProjRows[0], p), dot(gSp.previousCamera.viewProjRows[1], p),
-                               dot(gSp.previousCamera.viewProjRows[2], p), dot(gSp.previousCamera.viewProjRows[3], p));
+    const float4 clip =
+        float4(dot(gSp.previousCamera.viewProjRows[0], p), dot(gSp.previousCamera.viewProjRows[1], p),
+               dot(gSp.previousCamera.viewProjRows[2], p), dot(gSp.previousCamera.viewProjRows[3], p));
     if (clip.w <= 0.0) {
         pixel = float2(0.0, 0.0);
         return false;
