@@ -1,0 +1,130 @@
+#include "gi/screen_probes/screen_probe_gather.h"
+
+#include "gi/core/camera.h"
+#include "shaders/screen_probes/screen_probe_shared.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace lumina::gi {
+
+namespace {
+
+void checkVoxelLighting(const VoxelLighting& voxels) {
+    if (!voxels.texture) {
+        return;
+    }
+    const rhi::TextureDesc& desc = voxels.texture->desc();
+    if (desc.dimension != rhi::TextureDimension::Texture3D || desc.format != rhi::Format::RGBA16_FLOAT) {
+        throw std::invalid_argument("screen probes: voxel lighting '" + desc.debugName +
+                                    "' must be an RGBA16F 3D texture");
+    }
+    const glm::vec3 extent = voxels.boxMax - voxels.boxMin;
+    if (!(extent.x > 0.0f && extent.y > 0.0f && extent.z > 0.0f)) {
+        throw std::invalid_argument("screen probes: voxel lighting box has extent (" +
+                                    std::to_string(extent.x) + ", " + std::to_string(extent.y) + ", " +
+                                    std::to_string(extent.z) + "): expected all > 0");
+    }
+}
+
+} // namespace
+
+ScreenProbeGather::ScreenProbeGather(rhi::IDevice& device, uint32_t width, uint32_t height,
+                                     ScreenProbeSettings settings)
+    : settings_(settings), resources_(ScreenProbeResources::create(device, width, height, settings)) {}
+
+uint32_t ScreenProbeGather::brdfRays() const {
+    return uint32_t(std::lround(float(resources_.raysPerProbe) * settings_.brdfRayFraction));
+}
+
+void ScreenProbeGather::uploadConstants(rhi::ICommandList& commands, const ScreenProbeInputs& inputs,
+                                        const gpu::GpuCamera& camera) {
+    const ScreenProbeResources& r = resources_;
+    const gpu::SdfSceneInfo sdf = inputs.sdf.sceneInfo();
+    const float voxel = sdf.globalMinAndVoxelSize.w;
+    const glm::vec3 gridExtent =
+        glm::vec3(sdf.globalMaxAndMaxDistance) - glm::vec3(sdf.globalMinAndVoxelSize);
+    const float maxDistance =
+        settings_.maxTraceDistance > 0.0f ? settings_.maxTraceDistance : glm::length(gridExtent);
+    const uint32_t brdfRays = this->brdfRays();
+
+    uint32_t flags = 0;
+    if (previousCamera_) {
+        flags |= LUMINA_SP_FLAG_PROBE_HISTORY | LUMINA_SP_FLAG_SCREEN_HISTORY;
+    }
+    if (inputs.voxelLighting.texture) {
+        flags |= LUMINA_SP_FLAG_VOXEL_LIGHTING;
+    }
+    gpu::ScreenProbeConstants c{};
+    c.camera = camera;
+    c.previousCamera = previousCamera_ ? *previousCamera_ : camera;
+    c.grid = gpu::uint4(r.gridWidth, r.gridHeight, settings_.probeSpacing, r.probeCount);
+    c.screen = gpu::uint4(r.width, r.height, uint32_t(frames_), flags);
+    c.rays = gpu::uint4(r.raysPerProbe, brdfRays, r.raysPerProbe - brdfRays, 0u);
+    c.sky = gpu::float4(inputs.sky, 0.0f);
+    c.voxelMin = gpu::float4(inputs.voxelLighting.boxMin, 0.0f);
+    c.voxelMax = gpu::float4(inputs.voxelLighting.boxMax, 0.0f);
+    c.trace =
+        gpu::float4(maxDistance, std::tan(settings_.coneHalfAngle), settings_.originBiasVoxels * voxel, 0.0f);
+    c.temporal = gpu::float4(settings_.probeHistoryBlend, settings_.outlierClamp,
+                             settings_.screenHistoryBlend, settings_.lightingPdfFloor);
+    c.filter = gpu::float4(settings_.filterPlaneScale, settings_.filterNormalPower,
+                           settings_.historyPlaneTolerance, settings_.historyNormalTolerance);
+    commands.writeBuffer(*r.constants, &c, sizeof(c));
+}
+
+void ScreenProbeGather::record(FrameContext& frame, const ScreenProbeInputs& inputs) {
+    const rhi::TextureDesc& size = inputs.gbuffer.position->desc();
+    if (size.width != resources_.width || size.height != resources_.height) {
+        throw std::invalid_argument("screen probes: GBuffer is " + std::to_string(size.width) + "x" +
+                                    std::to_string(size.height) + ", the gather was made for " +
+                                    std::to_string(resources_.width) + "x" +
+                                    std::to_string(resources_.height));
+    }
+    checkVoxelLighting(inputs.voxelLighting);
+    if (!voxelFallbackCleared_) {
+        const uint16_t zeros[4] = {0, 0, 0, 0}; // RGBA16F zeros
+        frame.commands().writeTexture(*resources_.noVoxelLighting, {}, zeros);
+        voxelFallbackCleared_ = true;
+    }
+    current_ ^= 1u;
+    const gpu::GpuCamera camera = makeGpuCamera(inputs.camera, resources_.width, resources_.height);
+    uploadConstants(frame.commands(), inputs, camera);
+
+    const ScreenProbeView view{.resources = resources_,
+                               .gbuffer = inputs.gbuffer,
+                               .sdf = inputs.sdf,
+                               .voxelLighting = inputs.voxelLighting.texture ? inputs.voxelLighting.texture
+                                                                             : resources_.noVoxelLighting,
+                               .current = current_};
+    placement_.record(frame, view);
+    // A strategy that draws no rays needs no table (spMisWeight leaves it out).
+    if (brdfRays() > 0) {
+        brdfPdf_.record(frame, view);
+    } else {
+        frame.skip(ProbeBrdfPdfPass::kName,
+                   "no BRDF rays: all " + std::to_string(resources_.raysPerProbe) + " from the lighting PDF");
+    }
+    if (brdfRays() < resources_.raysPerProbe) {
+        lightingPdf_.record(frame, view);
+    } else {
+        frame.skip(ProbeLightingPdfPass::kName,
+                   "no lighting rays: all " + std::to_string(resources_.raysPerProbe) + " from the BRDF PDF");
+    }
+    rayGeneration_.record(frame, view);
+    traceFarField_.record(frame, view);
+    rayShading_.record(frame, view);
+    composite_.record(frame, view);
+    temporal_.record(frame, view);
+    spatialFilter_.record(frame, view);
+    shIrradiance_.record(frame, view);
+    gather_.record(frame, view);
+    screenTemporal_.record(frame, view);
+
+    previousCamera_ = camera;
+    ++frames_;
+}
+
+} // namespace lumina::gi

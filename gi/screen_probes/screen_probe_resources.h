@@ -1,0 +1,42 @@
+#pragma once
+// The GPU memory of the screen-probe gather: every intermediate of every pass, kept so that each
+// can be read back (tests, --dump-buffers), and the ping-pong pairs of what survives a frame
+// (probes, probe radiance history, the full-resolution result and the positions it was made at).
+// Layouts in docs/screen_probes.md.
+#include "gi/screen_probes/screen_probe_settings.h"
+#include "rhi/rhi.h"
+
+#include <array>
+#include <cstdint>
+
+namespace lumina::gi {
+
+struct ScreenProbeResources {
+    uint32_t width = 0, height = 0;         // full resolution
+    uint32_t gridWidth = 0, gridHeight = 0; // probes across and down
+    uint32_t probeCount = 0;
+    uint32_t raysPerProbe = 0;
+
+    rhi::BufferHandle constants;              // ScreenProbeConstants
+    std::array<rhi::BufferHandle, 2> probes;  // ScreenProbe[probeCount], this frame's and last frame's
+    rhi::BufferHandle brdfPdf;                // float[probeCount x 64]: texel probabilities
+    rhi::BufferHandle lightingPdf;            // float[probeCount x 64]
+    rhi::BufferHandle rays;                   // ProbeRay[probeCount x raysPerProbe]
+    rhi::BufferHandle hits;                   // SdfHit[probeCount x raysPerProbe]
+    rhi::BufferHandle rayRadiance;            // float4[probeCount x raysPerProbe]
+    rhi::BufferHandle frameRadiance;          // float4[probeCount x 64]: this frame's composite
+    std::array<rhi::BufferHandle, 2> history; // float4[probeCount x 64]: accumulated radiance
+    rhi::BufferHandle filtered;               // float4[probeCount x 64]: after the spatial filter
+    rhi::BufferHandle sh;                     // float4[probeCount x 9]: rgb per SH coefficient
+    rhi::TextureHandle irradiance;            // RGBA16F atlas of bordered octahedral tiles
+    rhi::TextureHandle gather;                // RGBA16F full resolution: irradiance, before the screen filter
+    std::array<rhi::TextureHandle, 2> screenIrradiance; // RGBA16F: the result; a: frames accumulated
+    std::array<rhi::TextureHandle, 2> screenPosition;   // RGBA32F: GBuffer position the result was made at
+    rhi::TextureHandle noVoxelLighting; // 1x1x1 RGBA16F of zeros, bound when the caller has none
+    rhi::SamplerHandle linearClamp;
+
+    static ScreenProbeResources create(rhi::IDevice& device, uint32_t width, uint32_t height,
+                                       const ScreenProbeSettings& settings);
+};
+
+} // namespace lumina::gi

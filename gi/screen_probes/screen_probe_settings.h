@@ -1,0 +1,33 @@
+#pragma once
+// Quality settings of the screen-probe final gather, in one struct (docs/screen_probes.md).
+// validate() throws std::invalid_argument naming the first bad value.
+#include <cstdint>
+
+namespace lumina::gi {
+
+struct ScreenProbeSettings {
+    uint32_t probeSpacing = 8;    // pixels per probe edge: one probe per spacing x spacing pixels
+    uint32_t raysPerProbe = 64;   // 16 .. 256
+    float brdfRayFraction = 0.5f; // share of the rays drawn from the BRDF PDF; the rest from the lighting PDF
+    float lightingPdfFloor = 0.1f; // share of the lighting PDF spread uniformly over the hemisphere, so
+                                   // every direction stays reachable (0 < floor <= 1)
+
+    float maxTraceDistance = 0.0f; // world units; 0: the global SDF grid's diagonal
+    float coneHalfAngle = 0.1f;    // radians (the thesis's far-field cone)
+    float originBiasVoxels = 2.0f; // rays start this many global SDF voxels off the surface, along its normal
+
+    float probeHistoryBlend = 0.1f;      // weight of the new frame in the probe radiance history
+    float outlierClamp = 2.0f;           // new radiance clamped to this x the probe's history luminance
+    float historyPlaneTolerance = 0.02f; // history kept while the old probe lies this close (x view depth)
+                                         // to the new one's plane
+    float historyNormalTolerance = 0.9f; // ... and their normals' cosine is at least this
+
+    float filterPlaneScale = 0.02f; // spatial filter and gather: exp(-plane distance / (this x view depth))
+    float filterNormalPower = 8.0f; // ... times max(0, n . n')^power
+
+    float screenHistoryBlend = 0.2f; // weight of the new frame in the full-resolution temporal filter
+
+    void validate() const;
+};
+
+} // namespace lumina::gi

@@ -1,0 +1,51 @@
+// lumina-kernel: cs main
+// Pass 9, spatial filter: each texel of a probe's accumulated radiance averaged with the same
+// world direction in its four grid neighbours (a cross-bilateral filter over the probe grid). The
+// centre weighs 1; a neighbour exp(-plane distance / (filter.x x view depth)) x
+// max(0, n . n')^filter.y, so light does not bleed across depth or orientation edges. Texels with
+// no data (weight 0) take no part. One group per probe, one thread per texel.
+#include "screen_probes/screen_probe_common.hlsli"
+
+StructuredBuffer<ScreenProbe> gProbes : register(t0);
+StructuredBuffer<float4> gHistory : register(t1);
+RWStructuredBuffer<float4> gFiltered : register(u0); // rgb: radiance; a: 1 where any sample had data
+
+[numthreads(LUMINA_SP_PROBE_TEXELS, 1, 1)] void main(uint3 group : SV_GroupID, uint t : SV_GroupIndex) {
+    const uint probe = probeIndexOfGroup(group);
+    if (probe >= gSp.grid.w || !probeIsValid(gProbes[probe])) {
+        return;
+    }
+    const ScreenProbe centre = gProbes[probe];
+    const float3 direction = texelDirection(probeFrame(centre.normal.xyz), t);
+    const float4 own = gHistory[probe * LUMINA_SP_PROBE_TEXELS + t];
+    float3 sum = own.a > 0.0 ? own.rgb : float3(0.0, 0.0, 0.0);
+    float weight = own.a > 0.0 ? 1.0 : 0.0;
+    const int2 offsets[4] = {int2(-1, 0), int2(1, 0), int2(0, -1), int2(0, 1)};
+    const int2 cell = int2(group.xy);
+    for (uint k = 0u; k < 4u; ++k) {
+        const int2 at = cell + offsets[k];
+        if (any(at < 0) || any(at >= int2(gSp.grid.xy))) {
+            continue;
+        }
+        const uint other = uint(at.y) * gSp.grid.x + uint(at.x);
+        const ScreenProbe neighbour = gProbes[other];
+        if (!probeIsValid(neighbour)) {
+            continue;
+        }
+        const float3 offset = neighbour.positionAndDepth.xyz - centre.positionAndDepth.xyz;
+        const float planeDistance = abs(dot(offset, centre.normal.xyz));
+        const float w = exp(-planeDistance / (gSp.filter.x * centre.positionAndDepth.w)) *
+                        pow(saturate(dot(neighbour.normal.xyz, centre.normal.xyz)), gSp.filter.y);
+        const int texel = texelInFrame(probeFrame(neighbour.normal.xyz), direction);
+        if (texel < 0 || !(w > 0.0)) {
+            continue;
+        }
+        const float4 value = gHistory[other * LUMINA_SP_PROBE_TEXELS + uint(texel)];
+        if (value.a > 0.0) {
+            sum += w * value.rgb;
+            weight += w;
+        }
+    }
+    gFiltered[probe * LUMINA_SP_PROBE_TEXELS + t] =
+        weight > 0.0 ? float4(sum / weight, 1.0) : float4(0.0, 0.0, 0.0, 0.0);
+}

@@ -1,0 +1,92 @@
+#ifndef LUMINA_SCREEN_PROBE_COMMON_HLSLI
+#define LUMINA_SCREEN_PROBE_COMMON_HLSLI
+// What the screen-probe kernels share: their constants (b1), the probe a per-probe group works
+// on, finding a probe's history in the previous frame, and sanitising values headed for history.
+#include "common/bindings.hlsli"
+#include "common/conventions.h"
+#include "screen_probes/probe_sampling_shared.h"
+#include "screen_probes/screen_probe_shared.h"
+
+ConstantBuffer<ScreenProbeConstants> gSp : register(b1);
+
+// Per-probe passes dispatch one group per probe over the probe grid.
+uint probeIndexOfGroup(uint3 group) {
+    return group.y * gSp.grid.x + group.x;
+}
+
+bool probeIsValid(ScreenProbe probe) {
+    return (probe.info.x & LUMINA_SP_PROBE_VALID) != 0u;
+}
+
+bool hasFlag(uint flag) {
+    return (gSp.screen.w & flag) != 0u;
+}
+
+bool allFinite3(float3 v) {
+    return !any(isnan(v)) && !any(isinf(v));
+}
+
+// World position to a pixel position of the previous frame's camera; false behind it or off screen.
+bool previousPixel(float3 world, out float2 pixel) {
+    const float4 p = float4(world, 1.0);
+    const float4 clip =
+        float4(dot(gSp.previousCamera.viewProjRows[0], p), dot(gSp.previousCamera.viewProjRows[1], p),
+               dot(gSp.previousCamera.viewProjRows[2], p), dot(gSp.previousCamera.viewProjRows[3], p));
+    if (clip.w <= 0.0) {
+        pixel = float2(0.0, 0.0);
+        return false;
+    }
+    const float2 ndc = clip.xy / clip.w;
+    pixel = float2(0.5 + 0.5 * ndc.x, 0.5 - 0.5 * ndc.y) * float2(gSp.screen.xy);
+    return all(pixel >= 0.0) && all(pixel < float2(gSp.screen.xy));
+}
+
+// The previous frame's probe at the cell this probe's position projects to there, or -1. Probes sit
+// at cell centres, so the candidate lies within about a cell of where the surface was seen.
+int historyProbeCandidate(float3 world) {
+    float2 pixel;
+    if (!hasFlag(LUMINA_SP_FLAG_PROBE_HISTORY) || !previousPixel(world, pixel)) {
+        return -1;
+    }
+    const uint2 cell = min(uint2(pixel) / gSp.grid.z, gSp.grid.xy - 1u);
+    return int(cell.y * gSp.grid.x + cell.x);
+}
+
+// Whether the old probe saw the same surface: valid, on the new probe's plane (within
+// filter.z x view depth), facing the same way (cosine at least filter.w) and within
+// LUMINA_SP_HISTORY_MAX_CELLS cells' world size of it. A probe that moved in world space
+// (disocclusion, a moved object) loses its history.
+bool historyMatches(ScreenProbe current, ScreenProbe previous) {
+    if (!probeIsValid(previous)) {
+        return false;
+    }
+    const float depth = current.positionAndDepth.w;
+    const float3 offset = previous.positionAndDepth.xyz - current.positionAndDepth.xyz;
+    const float cellWorld = float(gSp.grid.z) * 2.0 * gSp.camera.positionAndTanHalfFovY.w * depth *
+                            gSp.camera.imageSize.w;
+    return abs(dot(offset, current.normal.xyz)) <= gSp.filter.z * depth &&
+           dot(previous.normal.xyz, current.normal.xyz) >= gSp.filter.w &&
+           length(offset) <= LUMINA_SP_HISTORY_MAX_CELLS * cellWorld;
+}
+
+// Texel of a probe's map (frame f) that holds world direction d, or -1 below its hemisphere.
+int texelInFrame(ProbeFrame f, float3 d) {
+    const float3 local = worldToProbe(f, d);
+    if (local.z <= 0.0) {
+        return -1;
+    }
+    return int(octTexelOf(hemiOctEncode(local), LUMINA_SP_OCT_SIZE));
+}
+
+// Solid angle of texel t of a probe's map (the same for every probe: the map is in its frame).
+float texelSolidAngle(uint t) {
+    return hemiOctTexelSolidAngle(t % LUMINA_SP_OCT_SIZE, t / LUMINA_SP_OCT_SIZE, LUMINA_SP_OCT_SIZE);
+}
+
+// World direction of the centre of texel t of a probe's map.
+float3 texelDirection(ProbeFrame f, uint t) {
+    const float2 e = octTexelCentre(t % LUMINA_SP_OCT_SIZE, t / LUMINA_SP_OCT_SIZE, LUMINA_SP_OCT_SIZE);
+    return probeToWorld(f, hemiOctDecode(e));
+}
+
+#endif

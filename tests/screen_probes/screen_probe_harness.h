@@ -1,0 +1,149 @@
+#pragma once
+// A scene on a test device with everything the screen probes read: the deferred renderer (for
+// the GBuffer), the scene's SDFs, a voxel lighting volume the test fills, and the gather. Each
+// render() records one frame (SDF compose, deferred frame, screen probes), submits it and waits.
+#include "gi/core/frame_context.h"
+#include "gi/core/pipeline_cache.h"
+#include "gi/deferred/buffer_readback.h"
+#include "gi/deferred/deferred_renderer.h"
+#include "gi/gpu_scene/gpu_scene.h"
+#include "gi/scene/scene.h"
+#include "gi/scene/scene_loader.h"
+#include "gi/screen_probes/screen_probe_gather.h"
+#include "gi/sdf/scene_sdf.h"
+#include "gi/sdf/sdf_atlas.h"
+#include "rhi/rhi.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace lumina::test {
+
+constexpr uint32_t kSize = 64; // image edge of most screen-probe GPU tests: an 8 x 8 probe grid
+constexpr float kPi = 3.14159265358979f;
+
+// cornell_box_point seen from farther back: the box fills the middle, the sky the rest.
+inline scene::Scene cornellWithSky() {
+    scene::Scene scene = scene::loadScene("cornell_box_point");
+    scene.camera.position -= scene.camera.forward * 900.0f;
+    return scene;
+}
+
+class ScreenProbeHarness {
+public:
+    // Voxel lighting is a dims^3 volume over the global SDF's grid: far-field hits land anywhere in
+    // it (a cone "hits" where it comes within its radius of a surface, in front of an opening too).
+    ScreenProbeHarness(rhi::IDevice& device, rhi::ShaderLibrary& shaders, scene::Scene scene, uint32_t width,
+                       uint32_t height, gi::ScreenProbeSettings settings = {}, uint32_t voxelDims = 8)
+        : device_(device), scene_(std::move(scene)), pipelines_(device, shaders), gpuScene_(device, scene_),
+          renderer_(device, scene_, gpuScene_,
+                    {.width = width, .height = height, .log = [](std::string_view) {}}),
+          sdf_(device, scene_, sdfSettings()), probes_(device, width, height, settings),
+          camera_(scene_.camera), list_(device.createCommandList()), voxelDims_(voxelDims) {
+        const gpu::SdfSceneInfo grid = sdf_.sceneInfo();
+        voxelMin_ = glm::vec3(grid.globalMinAndVoxelSize);
+        voxelMax_ = glm::vec3(grid.globalMaxAndMaxDistance);
+        voxels_ = device.createTexture({.dimension = rhi::TextureDimension::Texture3D,
+                                        .format = rhi::Format::RGBA16_FLOAT,
+                                        .width = voxelDims,
+                                        .height = voxelDims,
+                                        .depth = voxelDims,
+                                        .usage = rhi::TextureUsage::Sampled,
+                                        .debugName = "test voxel lighting"});
+        fillVoxels([](uint32_t, uint32_t, uint32_t) { return glm::vec4(0.0f); });
+    }
+
+    static sdf::SceneSdfSettings sdfSettings() {
+        sdf::SceneSdfSettings s;
+        s.mesh.resolution = 32;
+        s.globalResolution = 48;
+        s.useCache = false;
+        return s;
+    }
+
+    // Fills the voxel lighting volume: value(x, y, z) = (premultiplied radiance, occupancy).
+    template <typename F>
+    void fillVoxels(F value) {
+        std::vector<uint16_t> texels;
+        for (uint32_t z = 0; z < voxelDims_; ++z) {
+            for (uint32_t y = 0; y < voxelDims_; ++y) {
+                for (uint32_t x = 0; x < voxelDims_; ++x) {
+                    const glm::vec4 v = value(x, y, z);
+                    for (int c = 0; c < 4; ++c) {
+                        texels.push_back(sdf::floatToHalf(v[c]));
+                    }
+                }
+            }
+        }
+        rhi::writeTexture(device_, *voxels_, {}, texels.data());
+    }
+
+    void setSky(glm::vec3 sky) { sky_ = sky; }
+    void setCamera(const scene::Camera& camera) {
+        camera_ = camera;
+        renderer_.setCamera(camera);
+    }
+    void useVoxelLighting(bool use) { useVoxels_ = use; }
+
+    // Records and runs one frame; returns the names of the timed passes that ran, in order.
+    std::vector<std::string> render() {
+        list_->begin();
+        gi::FrameContext frame(pipelines_, *list_, frameIndex_++);
+        sdf_.record(frame);
+        renderer_.render(frame);
+        probes_.record(frame, {.gbuffer = renderer_.gbuffer(),
+                               .camera = camera_,
+                               .sdf = sdf_,
+                               .sky = sky_,
+                               .voxelLighting = {useVoxels_ ? voxels_ : nullptr, voxelMin_, voxelMax_}});
+        list_->end();
+        skipped_ = frame.skipped();
+        rhi::IQueue& queue = device_.queue(rhi::QueueType::Graphics);
+        queue.waitForValue(queue.submit(*list_));
+        timings_ = list_->timerResults();
+        std::vector<std::string> passes;
+        for (const rhi::TimerResult& timer : timings_) {
+            passes.push_back(timer.name);
+        }
+        return passes;
+    }
+
+    image::Image read(const rhi::TextureHandle& texture) { return gi::readTextureImage(device_, *texture); }
+    template <typename T>
+    std::vector<T> read(const rhi::BufferHandle& buffer) {
+        return rhi::readBufferAs<T>(device_, *buffer);
+    }
+
+    // The passes the last frame skipped, and why.
+    const std::vector<gi::SkippedPass>& skipped() const { return skipped_; }
+    // GPU time of every pass of the last frame.
+    const std::vector<rhi::TimerResult>& timings() const { return timings_; }
+    uint32_t voxelDims() const { return voxelDims_; }
+    glm::vec3 voxelMin() const { return voxelMin_; }
+    glm::vec3 voxelMax() const { return voxelMax_; }
+    gi::ScreenProbeGather& probes() { return probes_; }
+    gi::DeferredRenderer& renderer() { return renderer_; }
+    const scene::Scene& scene() const { return scene_; }
+
+private:
+    rhi::IDevice& device_;
+    scene::Scene scene_;
+    gi::PipelineCache pipelines_;
+    gi::GpuScene gpuScene_;
+    gi::DeferredRenderer renderer_;
+    sdf::SceneSdf sdf_;
+    gi::ScreenProbeGather probes_;
+    scene::Camera camera_;
+    rhi::CommandListHandle list_;
+    uint64_t frameIndex_ = 0;
+    uint32_t voxelDims_;
+    rhi::TextureHandle voxels_;
+    glm::vec3 voxelMin_{0.0f}, voxelMax_{0.0f};
+    glm::vec3 sky_{0.0f};
+    bool useVoxels_ = true;
+    std::vector<rhi::TimerResult> timings_;
+    std::vector<gi::SkippedPass> skipped_;
+};
+
+} // namespace lumina::test
