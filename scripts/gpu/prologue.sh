@@ -9,3 +9,9 @@ export LUMINA_SOURCE_DIR=$PWD
 if [ -f /usr/local/nvidia/share/vulkan/icd.d/nvidia_icd.json ]; then
   export VK_DRIVER_FILES=/usr/local/nvidia/share/vulkan/icd.d/nvidia_icd.json
 fi
+# The NVIDIA driver's TLS library needs static TLS; loaded late (by the loader, once per
+# VkInstance) it can find none left ("cannot allocate memory in static TLS block"), which
+# failed every instance after the first few in the conformance tests. Preloaded, it has its own.
+for tls in /usr/local/nvidia/lib64/libnvidia-tls.so.*; do
+  if [ -f "$tls" ]; then export LD_PRELOAD=$tls; fi
+done
