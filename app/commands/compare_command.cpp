@@ -35,13 +35,33 @@ void writeText(const std::string& path, const std::string& text) {
     }
 }
 
-void printReport(const std::string& refPath, const std::string& testPath,
-                 const measure::CompareResult& result, const measure::CompareOptions& options) {
+// Mean R, G, B over the finite pixels: whether the test image has the reference's energy.
+std::string meanRgb(const image::Image& image) {
+    double sum[3] = {0.0, 0.0, 0.0};
+    uint64_t count = 0;
+    const auto r = image.channel("R"), g = image.channel("G"), b = image.channel("B");
+    for (size_t i = 0; i < r.size(); ++i) {
+        if (std::isfinite(r[i]) && std::isfinite(g[i]) && std::isfinite(b[i])) {
+            sum[0] += r[i];
+            sum[1] += g[i];
+            sum[2] += b[i];
+            ++count;
+        }
+    }
+    const double n = double(count == 0 ? 1 : count);
+    return "(" + number(sum[0] / n) + ", " + number(sum[1] / n) + ", " + number(sum[2] / n) + ")";
+}
+
+void printReport(const std::string& refPath, const std::string& testPath, const image::Image& reference,
+                 const image::Image& test, const measure::CompareResult& result,
+                 const measure::CompareOptions& options) {
     std::ostringstream out;
     out << "compare: " << refPath << " (reference) vs " << testPath << ", " << result.width << "x"
         << result.height << ", " << result.linear.pixels << " pixels compared\n";
     out << "  relMSE     " << number(result.linear.relMse) << "   linear radiance, mean (x-r)^2/(r^2+0.01)\n";
     out << "  RMSE       " << number(result.linear.rmse) << "   linear radiance\n";
+    out << "  mean       reference " << meanRgb(reference) << ", test " << meanRgb(test)
+        << "   linear R, G, B over finite pixels\n";
     out << "  PSNR       "
         << (std::isfinite(result.psnr) ? number(result.psnr, 5) + " dB" : std::string("inf dB"))
         << "   tonemapped sRGB, peak 1\n";
@@ -79,7 +99,7 @@ int runCompare(const ParsedArgs& args) {
                                 " is " + image::sizeString(test) + ": images must have the same size");
     }
     const measure::CompareResult result = measure::compareImages(reference, test, options);
-    printReport(refPath, testPath, result, options);
+    printReport(refPath, testPath, reference, test, result, options);
 
     if (args.has("heatmap")) {
         const std::string path = args.get("heatmap");

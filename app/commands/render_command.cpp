@@ -1,13 +1,15 @@
-// `lumina render SCENE`: the real-time deferred frame (GBuffer, sun and point-light shadows,
-// direct light, composite) rendered on the GPU and written as a PNG, optionally with the linear
-// HDR result as EXR, every intermediate buffer, and the GPU time of each pass.
+// `lumina render SCENE`: the real-time frame (GBuffer, sun and point-light shadows, direct
+// light, and with the lumen technique the surface cache and the screen-probe gather, then the
+// composite) rendered on the GPU and written as a PNG, optionally with the linear HDR result as
+// EXR, every intermediate buffer, and the GPU time of each pass.
 #include "app/command.h"
 #include "gi/core/build_info.h"
 #include "gi/core/frame_context.h"
 #include "gi/core/pipeline_cache.h"
 #include "gi/core/timing_table.h"
 #include "gi/deferred/buffer_readback.h"
-#include "gi/deferred/deferred_renderer.h"
+#include "gi/frame/frame_dump.h"
+#include "gi/frame/frame_renderer.h"
 #include "gi/gpu_scene/gpu_scene.h"
 #include "gi/image/exr.h"
 #include "gi/image/png.h"
@@ -27,6 +29,43 @@ namespace {
 // Frames run with --timings and no --frames: enough for a stable median on a real GPU and
 // for the skipped shadow passes to show in the table.
 constexpr uint32_t kTimingFrames = 60;
+// Lumen without --frames runs until the surface cache's radiosity has converged, then this
+// many frames more for the screen probes' temporal filters (about 10% new a frame: 0.9^48 < 1%),
+// and never more than kMaxConvergeFrames.
+constexpr uint32_t kProbeSettleFrames = 48;
+constexpr uint32_t kMaxConvergeFrames = 2000;
+
+gi::FrameRendererSettings rendererSettings(const ParsedArgs& args, const scene::Scene& scene,
+                                           float exposure) {
+    gi::FrameRendererSettings settings;
+    const std::string technique =
+        args.get("technique", scene.technique.empty() ? gi::kDefaultTechnique : scene.technique);
+    const std::string preset = args.get("preset", scene.preset.empty() ? gi::kDefaultPreset : scene.preset);
+    try {
+        settings.technique = gi::parseGiTechnique(technique);
+        if (settings.technique == gi::GiTechnique::Lumen) {
+            settings.lumen = gi::lumenPreset(preset, scene);
+            settings.lumen->probes.probeSpacing = static_cast<uint32_t>(
+                args.getUint("probe-spacing", settings.lumen->probes.probeSpacing, 2, 64));
+            settings.lumen->probes.raysPerProbe = static_cast<uint32_t>(
+                args.getUint("rays-per-probe", settings.lumen->probes.raysPerProbe, 16, 256));
+            settings.lumen->probes.validate();
+        }
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+    }
+    settings.deferred = {.width = scene.image.width,
+                         .height = scene.image.height,
+                         .exposureEv = exposure,
+                         .log = [](std::string_view line) { std::cout << "note: " << line << '\n'; }};
+    return settings;
+}
+
+// Whether the lumen surface cache has settled (radiosity converged); always for direct.
+bool surfacesSettled(const gi::FrameRenderer& renderer) {
+    const gi::LumenGi* lumen = renderer.lumen();
+    return lumen == nullptr || lumen->surfaceCache().radiositySchedule().converged();
+}
 
 int runRender(const ParsedArgs& args) {
     if (args.positional.size() != 1) {
@@ -34,11 +73,9 @@ int runRender(const ParsedArgs& args) {
                          "render --help)");
     }
     const bool timings = args.has("timings") || args.has("timings-json");
-    const uint32_t frames = args.common.frames.value_or(timings ? kTimingFrames : 1u);
-    if (frames == 0) {
+    if (args.common.frames && *args.common.frames == 0) {
         throw UsageError("--frames: at least one frame");
     }
-    const auto warmup = static_cast<uint32_t>(args.getUint("warmup", 0, 0, frames - 1));
     const auto exposure = static_cast<float>(args.getDouble("exposure", 0.0));
 
     scene::Scene loaded = scene::loadScene(args.positional.front());
@@ -54,19 +91,34 @@ int runRender(const ParsedArgs& args) {
               << loaded.lights.size() << " light(s), " << loaded.image.width << "x" << loaded.image.height
               << '\n';
 
+    gi::FrameRendererSettings settings = rendererSettings(args, loaded, exposure);
+    const bool lumen = settings.technique == gi::GiTechnique::Lumen;
+    // Direct light is final after one frame; lumen converges (see kProbeSettleFrames).
+    const bool converge = lumen && !args.common.frames;
+    const uint32_t frames = args.common.frames.value_or(converge  ? kMaxConvergeFrames
+                                                        : timings ? kTimingFrames
+                                                                  : 1u);
+    const auto warmup = static_cast<uint32_t>(args.getUint("warmup", 0, 0, frames - 1));
+    std::cout << "technique: " << gi::giTechniqueName(settings.technique);
+    if (lumen) {
+        std::cout << ", preset "
+                  << args.get("preset", loaded.preset.empty() ? gi::kDefaultPreset : loaded.preset)
+                  << " (atlas " << settings.lumen->cache.atlasSize << "^2, probes every "
+                  << settings.lumen->probes.probeSpacing << " px, " << settings.lumen->probes.raysPerProbe
+                  << " rays each)";
+    }
+    std::cout << '\n';
+
     rhi::ShaderLibrary shaders(*device);
     gi::PipelineCache pipelines(*device, shaders);
     gi::GpuScene gpuScene(*device, loaded);
-    gi::DeferredRenderer renderer(
-        *device, loaded, gpuScene,
-        {.width = loaded.image.width,
-         .height = loaded.image.height,
-         .exposureEv = exposure,
-         .log = [](std::string_view line) { std::cout << "note: " << line << '\n'; }});
+    gi::FrameRenderer renderer(*device, loaded, gpuScene, std::move(settings));
 
     gi::TimingTable table(warmup);
     rhi::CommandListHandle list = device->createCommandList();
     rhi::IQueue& queue = device->queue(rhi::QueueType::Graphics);
+    uint32_t settledAt = 0; // the frame after which the surface cache had converged; 0: not yet
+    uint32_t rendered = 0;
     for (uint32_t frameIndex = 0; frameIndex < frames; ++frameIndex) {
         list->begin();
         gi::FrameContext frame(pipelines, *list, frameIndex);
@@ -74,19 +126,36 @@ int runRender(const ParsedArgs& args) {
         list->end();
         queue.waitForValue(queue.submit(*list));
         table.addFrame(list->timerResults(), frame.skipped());
+        rendered = frameIndex + 1;
+        if (settledAt == 0 && surfacesSettled(renderer)) {
+            settledAt = rendered;
+        }
+        if (lumen && (rendered % 16 == 0 || rendered == frames)) {
+            std::cerr << "frame " << rendered << (converge ? "" : "/" + std::to_string(frames))
+                      << (settledAt ? ": surface cache converged" : ": surface cache converging") << '\n';
+        }
+        if (converge && settledAt != 0 && rendered >= settledAt + kProbeSettleFrames) {
+            break;
+        }
+    }
+    if (lumen) {
+        std::cout << "frames: " << rendered << " (surface cache "
+                  << (settledAt ? "converged after " + std::to_string(settledAt)
+                                : std::string("not converged"))
+                  << ")\n";
     }
 
-    image::writeDisplayPng(out, gi::displayImage(gi::readTextureImage(*device, *renderer.ldr())));
+    image::writeDisplayPng(out, gi::displayImage(gi::readTextureImage(*device, *renderer.deferred().ldr())));
     std::cout << "wrote " << out.string() << '\n';
     if (args.has("exr")) {
-        image::Image hdr = gi::readTextureImage(*device, *renderer.hdr());
+        image::Image hdr = gi::readTextureImage(*device, *renderer.deferred().hdr());
         hdr.removeChannel("A");
         image::writeExr(args.get("exr"), hdr);
         std::cout << "wrote " << args.get("exr") << " (linear HDR radiance)\n";
     }
     if (args.has("dump-buffers")) {
         const auto written =
-            gi::dumpDeferredBuffers(*device, renderer, args.get("dump-buffers"), {.exposureEv = exposure});
+            gi::dumpFrameBuffers(*device, renderer, args.get("dump-buffers"), {.exposureEv = exposure});
         std::cout << "wrote " << written.size() << " buffer images to " << args.get("dump-buffers") << '\n';
     }
     if (timings) {
@@ -100,7 +169,8 @@ int runRender(const ParsedArgs& args) {
                                                    {"scene", loaded.name},
                                                    {"size", std::to_string(loaded.image.width) + "x" +
                                                                 std::to_string(loaded.image.height)},
-                                                   {"renderer", "deferred (direct light)"}});
+                                                   {"technique", gi::giTechniqueName(renderer.technique())},
+                                                   {"frames", std::to_string(rendered)}});
         std::cout << "wrote " << args.get("timings-json") << '\n';
     }
     if (device->validationMessageCount() != 0) {
@@ -115,21 +185,34 @@ int runRender(const ParsedArgs& args) {
 Command renderCommand() {
     return {
         .name = "render",
-        .summary = "render a scene with the real-time deferred renderer",
-        .usage = "lumina render SCENE [--out img.png] [--exr img.exr] [--dump-buffers DIR] [--timings] "
-                 "[--timings-json PATH] [--frames N] [--warmup N] [--exposure EV] [--size WxH]",
+        .summary = "render a scene in real time: deferred direct light plus GI (lumen)",
+        .usage = "lumina render SCENE [--technique direct|lumen] [--preset low|medium|high] [--out img.png] "
+                 "[--exr img.exr] [--dump-buffers DIR] [--timings] [--timings-json PATH] [--frames N] "
+                 "[--warmup N] [--exposure EV] [--size WxH]",
         .description =
-            "Renders SCENE (a built-in name or a scene/glTF path) with the deferred renderer: GBuffer, sun "
-            "shadow map, point and spot light cube shadows, direct light and the composite (direct + "
-            "indirect x albedo; indirect is black until GI exists), then writes the tonemapped image as "
-            "PNG (default <scene>.png). --exr writes the linear HDR radiance; --dump-buffers writes every "
-            "intermediate target (GBuffer, shadow maps, direct light, HDR, LDR) as EXR and PNG. "
-            "--timings runs N frames (default 60) and prints the median GPU time of each pass from "
-            "timestamp queries, and how often each pass was skipped and why (shadow maps re-render "
-            "only when their light or the geometry changes). docs/deferred.md describes the frame.",
-        .flags = {{"exr", "PATH", "also write the linear HDR result as EXR"},
+            "Renders SCENE (a built-in name or a scene/glTF path) in real time: GBuffer, sun shadow map, "
+            "point and spot light cube shadows and direct light (docs/deferred.md); with the lumen "
+            "technique (the default) the scene's SDFs, the surface cache with multi-bounce radiosity "
+            "(docs/surface_cache.md) and the screen-probe final gather (docs/screen_probes.md) add "
+            "indirect light; the composite (direct + indirect x albedo) is tonemapped and written as PNG "
+            "(default <scene>.png). The technique and preset come from the flags, else the scene file, "
+            "else lumen and medium (docs/gi.md lists what each preset sets). Without --frames, lumen runs "
+            "until the surface cache converges and the probes settle (progress on stderr), direct one "
+            "frame (60 with --timings). --exr writes the linear HDR radiance; --dump-buffers writes every "
+            "intermediate (GBuffer, shadow maps, direct light, indirect term, every surface-cache layer, "
+            "card outlines and ids, radiosity probes, voxel lighting, every screen-probe buffer) as EXR "
+            "and PNG. --timings prints the median GPU time of each pass from timestamp queries and how "
+            "often each pass was skipped and why (shadow maps and surface-cache passes run only when "
+            "something they read changed).",
+        .flags = {{"technique", "NAME",
+                   "GI technique: direct (none) or lumen (default: the scene's, else lumen)"},
+                  {"preset", "NAME",
+                   "lumen quality preset: low, medium or high (default: the scene's, else medium)"},
+                  {"probe-spacing", "N", "pixels per screen-probe edge (overrides the preset; 2..64)"},
+                  {"rays-per-probe", "N", "rays per screen probe (overrides the preset; 16..256)"},
+                  {"exr", "PATH", "also write the linear HDR result as EXR"},
                   {"dump-buffers", "DIR", "write every intermediate buffer into DIR"},
-                  {"timings", "", "print the GPU time per pass (runs 60 frames unless --frames)"},
+                  {"timings", "", "print the GPU time per pass (direct: 60 frames unless --frames)"},
                   {"timings-json", "PATH", "write the per-pass timings as JSON"},
                   {"warmup", "N", "frames left out of the timings (default 0)"},
                   {"exposure", "EV", "exposure in stops before the tonemap (default 0)"}},

@@ -18,9 +18,14 @@ void CompositePass::record(FrameContext& frame, const CompositeInputs& inputs, c
         blackCleared_ = true;
     }
     const rhi::TextureDesc& size = hdr->desc();
-    const gpu::CompositeConstants constants{size.width, size.height,
+    const gpu::CompositeConstants constants{size.width,
+                                            size.height,
                                             inputs.indirect ? LUMINA_DEFERRED_FLAG_INDIRECT : 0u,
-                                            std::exp2(inputs.exposureEv)};
+                                            std::exp2(inputs.exposureEv),
+                                            inputs.indirectScale,
+                                            0.0f,
+                                            0.0f,
+                                            0.0f};
     frame.compute("composite", "deferred/composite")
         .constants(constants)
         .read(0, inputs.direct)

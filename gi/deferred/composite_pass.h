@@ -7,7 +7,8 @@ namespace lumina::gi {
 
 struct CompositeInputs {
     rhi::TextureHandle direct;
-    rhi::TextureHandle indirect; // null: no indirect term (black until GI exists)
+    rhi::TextureHandle indirect; // null: no indirect term
+    float indirectScale = 1.0f;  // HDR adds indirect x indirectScale x albedo (1/pi for irradiance)
     rhi::TextureHandle albedo;
     float exposureEv = 0.0f;
 };

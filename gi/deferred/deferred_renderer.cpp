@@ -126,6 +126,11 @@ void DeferredRenderer::uploadConstants(rhi::ICommandList& commands, const std::o
 }
 
 void DeferredRenderer::render(FrameContext& frame) {
+    recordLighting(frame);
+    recordComposite(frame);
+}
+
+void DeferredRenderer::recordLighting(FrameContext& frame) {
     std::optional<SunShadowFit> sun;
     if (lights_.sun) {
         sun = fitSunShadow(bounds_, sceneLights_[*lights_.sun].direction, settings_.sunShadowSize);
@@ -148,9 +153,13 @@ void DeferredRenderer::render(FrameContext& frame) {
                          .sunShadowMap = sunShadow_.map(),
                          .pointShadowMaps = pointShadow_.maps()},
                         direct_);
+}
+
+void DeferredRenderer::recordComposite(FrameContext& frame) {
     composite_.record(frame,
                       {.direct = direct_,
                        .indirect = indirect_,
+                       .indirectScale = indirectScale_,
                        .albedo = gbuffer_.albedo,
                        .exposureEv = settings_.exposureEv},
                       hdr_, ldr_);

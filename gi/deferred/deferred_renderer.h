@@ -54,14 +54,23 @@ public:
     DeferredRenderer(rhi::IDevice& device, const scene::Scene& scene, const GpuScene& gpuScene,
                      DeferredSettings settings = {});
 
-    // Records one frame: every pass, or its skip.
+    // Records one frame: every pass, or its skip. The same as recordLighting then recordComposite,
+    // between which GI reads the GBuffer and sets the indirect term.
     void render(FrameContext& frame);
+    // GBuffer, shadow maps and direct light.
+    void recordLighting(FrameContext& frame);
+    // HDR = direct + indirect x scale x albedo, tonemapped into the display image.
+    void recordComposite(FrameContext& frame);
 
     void setCamera(const scene::Camera& camera) { camera_ = camera; }
     void setLights(std::vector<scene::Light> lights);
     void setExposure(float ev) { settings_.exposureEv = ev; }
-    // Indirect light multiplied by albedo in the composite; null: none (the default).
-    void setIndirect(rhi::TextureHandle indirect) { indirect_ = std::move(indirect); }
+    // Indirect light, times `scale` and albedo in the composite; null: none (the default).
+    // Irradiance E from a GI pass takes scale 1/pi (Lambert).
+    void setIndirect(rhi::TextureHandle indirect, float scale = 1.0f) {
+        indirect_ = std::move(indirect);
+        indirectScale_ = scale;
+    }
     // Geometry moved (within `bounds`): shadow maps re-render on the next frame.
     void geometryChanged(const scene::Bounds& bounds);
 
@@ -94,6 +103,7 @@ private:
     scene::Bounds bounds_;
     uint64_t geometryVersion_ = 0;
     rhi::TextureHandle indirect_;
+    float indirectScale_ = 1.0f;
 
     GBuffer gbuffer_;
     rhi::TextureHandle direct_;

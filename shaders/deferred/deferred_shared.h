@@ -77,8 +77,12 @@ struct CompositeConstants {
     uint height;
     uint flags;          // LUMINA_DEFERRED_FLAG_*
     float exposureScale; // 2^EV
+    float indirectScale; // the indirect texture times this is the radiance-like term times albedo
+    float pad0;
+    float pad1;
+    float pad2;
 };
-LUMINA_STATIC_ASSERT_SIZE(CompositeConstants, 16);
+LUMINA_STATIC_ASSERT_SIZE(CompositeConstants, 32);
 
 // ---- cube faces -------------------------------------------------------------------------
 // The face convention of both APIs (Vulkan spec "Cube Map Face Selection", D3D the same):

@@ -1,0 +1,49 @@
+#include "gi/frame/frame_dump.h"
+
+#include "gi/deferred/buffer_readback.h"
+#include "gi/image/exr.h"
+#include "gi/image/png.h"
+#include "gi/screen_probes/screen_probe_readback.h"
+#include "gi/surface_cache/surface_cache_dump.h"
+
+namespace lumina::gi {
+
+std::vector<std::filesystem::path> dumpFrameBuffers(rhi::IDevice& device, const FrameRenderer& renderer,
+                                                    const std::filesystem::path& directory,
+                                                    const image::DisplayOptions& display) {
+    std::vector<std::filesystem::path> written =
+        dumpDeferredBuffers(device, renderer.deferred(), directory, display);
+    const LumenGi* lumen = renderer.lumen();
+    if (lumen == nullptr) {
+        return written;
+    }
+    // The indirect term: the gathered irradiance E, and the radiance it adds, albedo x E / pi.
+    image::Image irradiance = readTextureImage(device, *lumen->irradiance());
+    irradiance.removeChannel("A");
+    written.push_back(directory / "indirect_irradiance.exr");
+    image::writeExr(written.back(), irradiance);
+    const image::Image albedo = readTextureImage(device, *renderer.deferred().gbuffer().albedo);
+    image::Image indirect = image::Image::rgb(irradiance.width(), irradiance.height());
+    for (const char* c : {"R", "G", "B"}) {
+        const auto e = irradiance.channel(c);
+        const auto a = albedo.channel(c);
+        const auto out = indirect.channel(c);
+        for (size_t i = 0; i < out.size(); ++i) {
+            out[i] = renderer.indirectScale() * e[i] * a[i];
+        }
+    }
+    written.push_back(directory / "indirect.exr");
+    image::writeExr(written.back(), indirect);
+    written.push_back(directory / "indirect.png");
+    image::writePng(written.back(), indirect, display);
+
+    for (auto& path : surface_cache::dumpSurfaceCache(device, lumen->surfaceCache(), directory, display)) {
+        written.push_back(std::move(path));
+    }
+    for (auto& path : dumpScreenProbeBuffers(device, lumen->screenProbes(), directory)) {
+        written.push_back(std::move(path));
+    }
+    return written;
+}
+
+} // namespace lumina::gi

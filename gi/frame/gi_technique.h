@@ -1,0 +1,46 @@
+#pragma once
+// The GI techniques `lumina render` and `lumina bench` run, and the quality presets of each,
+// by name (scene files, --technique, --preset; docs/gi.md):
+//
+//   direct  the deferred renderer alone: no indirect light (what a user gets without GI)
+//   lumen   surface cache with surface radiosity + screen-probe final gather
+//
+//   presets low, medium (default), high: surface-cache texel density and atlas size, radiosity
+//   budget, probe spacing, rays per probe and temporal weights (lumenPreset below).
+#include "gi/scene/scene.h"
+#include "gi/screen_probes/screen_probe_settings.h"
+#include "gi/sdf/scene_sdf_data.h"
+#include "gi/surface_cache/surface_cache.h"
+#include "gi/surface_cache/surface_cache_settings.h"
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace lumina::gi {
+
+enum class GiTechnique { Direct, Lumen };
+
+inline constexpr const char* kDefaultTechnique = "lumen";
+inline constexpr const char* kDefaultPreset = "medium";
+
+// "direct" or "lumen"; std::invalid_argument naming the name and the choices otherwise.
+GiTechnique parseGiTechnique(std::string_view name);
+const char* giTechniqueName(GiTechnique technique);
+std::vector<std::string> giTechniqueNames();
+std::vector<std::string> lumenPresetNames();
+
+// Everything the lumen technique is built with.
+struct LumenSettings {
+    sdf::SceneSdfSettings sdf;
+    surface_cache::SurfaceCacheSettings cache;
+    surface_cache::SurfaceLightingSettings lighting;
+    ScreenProbeSettings probes;
+};
+
+// A preset for `scene`: lengths scale with the scene's extent (the Cornell box is in
+// millimetres, the city in metres), so card texels, card padding and distances follow the
+// scene. std::invalid_argument naming the preset and the choices for an unknown name.
+LumenSettings lumenPreset(std::string_view preset, const scene::Scene& scene);
+
+} // namespace lumina::gi

@@ -1,0 +1,53 @@
+#pragma once
+// The lumen technique's GI for one view (docs/gi.md): the scene's SDFs, its surface cache and
+// the screen-probe gather, recorded between the deferred renderer's lighting and composite:
+//
+//   deferred lighting ─► sdf compose ─► surface cache update ─► screen probes ─► composite
+//                                       (lit by the deferred     (read the GBuffer, the SDFs
+//                                        renderer's lights)       and the voxel lighting)
+//
+//   LumenGi gi(device, scene, gpuScene, width, height, lumenPreset("medium", scene));
+//   deferred.recordLighting(frame);
+//   gi.record(frame, deferred, camera);
+//   deferred.setIndirect(gi.irradiance(), 1 / pi);
+//   deferred.recordComposite(frame);
+#include "gi/core/frame_context.h"
+#include "gi/deferred/deferred_renderer.h"
+#include "gi/frame/gi_technique.h"
+#include "gi/gpu_scene/gpu_scene.h"
+#include "gi/scene/scene.h"
+#include "gi/screen_probes/screen_probe_gather.h"
+#include "gi/sdf/scene_sdf.h"
+#include "gi/surface_cache/surface_cache.h"
+
+namespace lumina::gi {
+
+class LumenGi {
+public:
+    // `scene` and `gpuScene` must outlive it. Builds (or loads from the cache) the mesh SDFs;
+    // throws std::invalid_argument for bad settings and what the subsystems throw (a full
+    // atlas names the card that did not fit).
+    LumenGi(rhi::IDevice& device, const scene::Scene& scene, const GpuScene& gpuScene, uint32_t width,
+            uint32_t height, const LumenSettings& settings);
+
+    // After deferred.recordLighting(frame) of the frame `camera` shows.
+    void record(FrameContext& frame, const DeferredRenderer& deferred, const scene::Camera& camera);
+    // The next frame's probes start without history (a camera cut).
+    void resetHistory() { probes_.resetHistory(); }
+
+    // RGBA16F irradiance E per pixel (0 on sky); the composite wants E / pi.
+    const rhi::TextureHandle& irradiance() const { return probes_.irradiance(); }
+    const sdf::SceneSdf& sdf() const { return sdf_; }
+    const surface_cache::SurfaceCache& surfaceCache() const { return cache_; }
+    const ScreenProbeGather& screenProbes() const { return probes_; }
+    const LumenSettings& settings() const { return settings_; }
+
+private:
+    LumenSettings settings_;
+    glm::vec3 sky_;
+    sdf::SceneSdf sdf_;
+    surface_cache::SurfaceCache cache_;
+    ScreenProbeGather probes_;
+};
+
+} // namespace lumina::gi
