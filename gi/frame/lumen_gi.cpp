@@ -19,7 +19,10 @@ void LumenGi::record(FrameContext& frame, const DeferredRenderer& deferred, cons
                            .camera = camera,
                            .sdf = sdf_,
                            .sky = sky_,
-                           .voxelLighting = {cache_.voxelLighting().volume(), boxMin, boxMax}});
+                           .voxelLighting = {.texture = cache_.voxelLighting().volume(),
+                                             .boxMin = boxMin,
+                                             .boxMax = boxMax,
+                                             .faces = LUMINA_VOXEL_FACES}});
 }
 
 } // namespace lumina::gi

@@ -21,6 +21,11 @@ void checkVoxelLighting(const VoxelLighting& voxels) {
         throw std::invalid_argument("screen probes: voxel lighting '" + desc.debugName +
                                     "' must be an RGBA16F 3D texture");
     }
+    if (voxels.faces == 0 || desc.width % voxels.faces != 0) {
+        throw std::invalid_argument("screen probes: voxel lighting '" + desc.debugName + "' is " +
+                                    std::to_string(desc.width) + " wide, not a whole number of " +
+                                    std::to_string(voxels.faces) + " face columns");
+    }
     const glm::vec3 extent = voxels.boxMax - voxels.boxMin;
     if (!(extent.x > 0.0f && extent.y > 0.0f && extent.z > 0.0f)) {
         throw std::invalid_argument("screen probes: voxel lighting box has extent (" +
@@ -64,7 +69,7 @@ void ScreenProbeGather::uploadConstants(rhi::ICommandList& commands, const Scree
     c.screen = gpu::uint4(r.width, r.height, uint32_t(frames_), flags);
     c.rays = gpu::uint4(r.raysPerProbe, brdfRays, r.raysPerProbe - brdfRays, 0u);
     c.sky = gpu::float4(inputs.sky, 0.0f);
-    c.voxelMin = gpu::float4(inputs.voxelLighting.boxMin, 0.0f);
+    c.voxelMin = gpu::float4(inputs.voxelLighting.boxMin, float(inputs.voxelLighting.faces));
     c.voxelMax = gpu::float4(inputs.voxelLighting.boxMax, 0.0f);
     c.trace =
         gpu::float4(maxDistance, std::tan(settings_.coneHalfAngle), settings_.originBiasVoxels * voxel, 0.0f);

@@ -43,6 +43,9 @@ struct VoxelLighting {
     rhi::TextureHandle texture; // null: none (hits are black)
     glm::vec3 boxMin{0.0f};
     glm::vec3 boxMax{0.0f};
+    // 1: one radiance per voxel; LUMINA_VOXEL_FACES (the surface cache's): the texture holds that
+    // many face columns side by side along x, read by the hit normal (surface_cache_lighting_shared.h).
+    uint32_t faces = 1;
 };
 
 struct ScreenProbeInputs {

@@ -64,7 +64,8 @@ public:
     // Every texel of a layer as linear RGBA floats, row-major (waits for the GPU). For
     // --dump-buffers and tests.
     std::vector<glm::vec4> readLayer(AtlasLayer layer) const;
-    // Every voxel of the voxel lighting (x fastest, then y, then z).
+    // Every voxel face of the voxel lighting: rows of LUMINA_VOXEL_FACES x dims.x texels (face f
+    // of voxel x at f * dims.x + x), then y, then z.
     std::vector<glm::vec4> readVoxelLighting() const;
 
     const SurfaceCards& cards() const { return cards_; }

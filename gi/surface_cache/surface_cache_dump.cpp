@@ -149,18 +149,21 @@ std::vector<std::filesystem::path> dumpSurfaceCache(rhi::IDevice& device, const 
     probeRgb.removeChannel("A");
     png("surface_cache_radiosity_probes", probeRgb, display);
 
-    // Voxel lighting: z slices left to right.
+    // Voxel lighting: z slices left to right, one row of slices per face (+x, -x, +y, -y, +z, -z).
     const gpu::VoxelGridInfo& grid = cache.voxelLighting().grid();
     const std::vector<glm::vec4> voxels = cache.readVoxelLighting();
-    const uint32_t nx = grid.dims.x, ny = grid.dims.y, nz = grid.dims.z;
-    image::Image slices = image::Image::rgba(nx * nz, ny);
-    for (uint32_t z = 0; z < nz; ++z) {
-        for (uint32_t y = 0; y < ny; ++y) {
-            for (uint32_t x = 0; x < nx; ++x) {
-                const glm::vec4 v = voxels[(size_t(z) * ny + y) * nx + x];
-                // y up in the world, down the image rows
-                slices.setRgb(z * nx + x, ny - 1 - y, {v.r, v.g, v.b});
-                slices.set("A", z * nx + x, ny - 1 - y, v.a);
+    const uint32_t nx = grid.dims.x, ny = grid.dims.y, nz = grid.dims.z, faces = LUMINA_VOXEL_FACES;
+    image::Image slices = image::Image::rgba(nx * nz, ny * faces);
+    for (uint32_t f = 0; f < faces; ++f) {
+        for (uint32_t z = 0; z < nz; ++z) {
+            for (uint32_t y = 0; y < ny; ++y) {
+                for (uint32_t x = 0; x < nx; ++x) {
+                    const glm::vec4 v = voxels[(size_t(z) * ny + y) * nx * faces + f * nx + x];
+                    // y up in the world, down the image rows
+                    const uint32_t row = f * ny + ny - 1 - y;
+                    slices.setRgb(z * nx + x, row, {v.r, v.g, v.b});
+                    slices.set("A", z * nx + x, row, v.a);
+                }
             }
         }
     }

@@ -9,7 +9,8 @@
 //                                     per card
 //   surface_cache_radiosity_probes.exr / .png  one pixel per radiosity probe (every 4 x 4 texels):
 //                                     the irradiance its L1 SH gives at its normal, A = valid
-//   surface_cache_voxel_lighting.exr  the voxel lighting volume's z slices side by side
+//   surface_cache_voxel_lighting.exr  the voxel lighting volume's z slices side by side, a row
+//                                     of them per face direction
 #include "gi/image/display.h"
 #include "gi/surface_cache/surface_cache.h"
 

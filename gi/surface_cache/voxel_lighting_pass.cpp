@@ -32,13 +32,13 @@ VoxelLightingPass::VoxelLightingPass(rhi::IDevice& device, const gpu::VoxelGridI
                                      const sdf::SceneSdf& sdf, float buriedDistance)
     : grid_(grid), sdf_(sdf), buriedDistance_(buriedDistance) {
     const uint64_t voxels = uint64_t(grid.dims.x) * grid.dims.y * grid.dims.z;
-    accumulator_ = device.createBuffer({.size = voxels * 4 * sizeof(uint32_t),
+    accumulator_ = device.createBuffer({.size = voxels * LUMINA_VOXEL_FACES * 4 * sizeof(uint32_t),
                                         .structStride = sizeof(uint32_t),
                                         .usage = rhi::BufferUsage::Structured | rhi::BufferUsage::Storage,
                                         .debugName = "surface cache voxel accumulator"});
     volume_ = device.createTexture({.dimension = rhi::TextureDimension::Texture3D,
                                     .format = rhi::Format::RGBA16_FLOAT,
-                                    .width = grid.dims.x,
+                                    .width = grid.dims.x * LUMINA_VOXEL_FACES,
                                     .height = grid.dims.y,
                                     .depth = grid.dims.z,
                                     .usage = rhi::TextureUsage::Sampled | rhi::TextureUsage::Storage,
@@ -76,7 +76,7 @@ void VoxelLightingPass::record(gi::FrameContext& frame, const AtlasSurfaceBindin
         .constants(constants)
         .write(0, accumulator_)
         .write(1, volume_)
-        .dispatchThreads(grid_.dims.x, grid_.dims.y, grid_.dims.z, {4, 4, 4});
+        .dispatchThreads(grid_.dims.x * LUMINA_VOXEL_FACES, grid_.dims.y, grid_.dims.z, {4, 4, 4});
 }
 
 } // namespace lumina::surface_cache

@@ -51,8 +51,8 @@ private:
     gpu::VoxelGridInfo grid_;
     const sdf::SceneSdf& sdf_;
     float buriedDistance_ = 0.0f;
-    rhi::BufferHandle accumulator_; // per voxel: r, g, b in fixed point, texel count
-    rhi::TextureHandle volume_;     // RGBA16F: rgb mean radiance, a coverage
+    rhi::BufferHandle accumulator_; // per voxel face: r, g, b and weight in fixed point
+    rhi::TextureHandle volume_; // RGBA16F, LUMINA_VOXEL_FACES x dims.x wide: rgb mean radiance, a coverage
 };
 
 } // namespace lumina::surface_cache

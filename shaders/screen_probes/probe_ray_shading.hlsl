@@ -18,14 +18,32 @@ RWStructuredBuffer<float4> gRayRadiance : register(u0); // rgb: radiance; a: 1 h
 // Occupancy below which a filtered voxel sample counts as empty.
 #define LUMINA_SP_MIN_OCCUPANCY 1e-3
 
-// The filtered, occupancy-normalised volume at p; a = the filtered occupancy.
-float4 voxelSample(float3 p) {
+// The filtered, occupancy-normalised volume at p, in the faces normal n points along when the
+// volume has face columns (the surface cache's: surface_cache_lighting_shared.h), each weighted
+// by the squared normal component; a = the filtered occupancy. The x coordinate is clamped half
+// a texel inside its face column so the filter never blends two faces.
+float4 voxelSample(float3 p, float3 n, uint3 dims) {
     const float3 uvw = (p - gSp.voxelMin.xyz) / (gSp.voxelMax.xyz - gSp.voxelMin.xyz);
     if (any(uvw < 0.0) || any(uvw > 1.0)) {
         return float4(0.0, 0.0, 0.0, 0.0);
     }
-    const float4 v = gVoxelLighting.SampleLevel(gLinearClamp, uvw, 0.0);
-    return v.a > LUMINA_SP_MIN_OCCUPANCY ? float4(v.rgb / v.a, v.a) : float4(0.0, 0.0, 0.0, 0.0);
+    const uint faces = max(uint(gSp.voxelMin.w), 1u);
+    if (faces == 1u) {
+        const float4 v = gVoxelLighting.SampleLevel(gLinearClamp, uvw, 0.0);
+        return v.a > LUMINA_SP_MIN_OCCUPANCY ? float4(v.rgb / v.a, v.a) : float4(0.0, 0.0, 0.0, 0.0);
+    }
+    const float column = float(dims.x / faces);
+    const float x = clamp(uvw.x * column, 0.5, column - 0.5);
+    float4 sum = float4(0.0, 0.0, 0.0, 0.0);
+    for (uint axis = 0u; axis < 3u; ++axis) {
+        const float weight = n[axis] * n[axis];
+        if (weight > 0.0) {
+            const float face = float(2u * axis + (n[axis] < 0.0 ? 1u : 0u));
+            const float u = (face * column + x) / float(dims.x);
+            sum += weight * gVoxelLighting.SampleLevel(gLinearClamp, float3(u, uvw.yz), 0.0);
+        }
+    }
+    return sum.a > LUMINA_SP_MIN_OCCUPANCY ? float4(sum.rgb / sum.a, sum.a) : float4(0.0, 0.0, 0.0, 0.0);
 }
 
 // A far-field hit lies in front of its surface: cone tracing stops once the distance falls
@@ -43,12 +61,12 @@ float3 voxelRadiance(float3 position, float3 normal, float t) {
     }
     uint3 dims;
     gVoxelLighting.GetDimensions(dims.x, dims.y, dims.z);
-    const float voxel = (gSp.voxelMax.x - gSp.voxelMin.x) / float(max(dims.x, 1u));
+    const float voxel = (gSp.voxelMax.x - gSp.voxelMin.x) * max(gSp.voxelMin.w, 1.0) / float(max(dims.x, 1u));
     const float reach = t * gSp.trace.y + voxel;
     const uint leans = clamp(uint(ceil(reach / voxel)), 1u, LUMINA_SP_MAX_VOXEL_LEANS);
     const float step = reach / float(leans);
     for (uint k = 0u; k <= leans; ++k) {
-        const float4 v = voxelSample(position - (0.5 * voxel + float(k) * step) * normal);
+        const float4 v = voxelSample(position - (0.5 * voxel + float(k) * step) * normal, normal, dims);
         if (v.a > 0.0) {
             return v.rgb;
         }

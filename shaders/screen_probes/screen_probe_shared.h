@@ -59,7 +59,7 @@ struct ScreenProbeConstants {
     uint4 screen;             // x, y: image size; z: frame index (ray jitter); w: LUMINA_SP_FLAG_*
     uint4 rays;               // x: rays per probe; y: BRDF rays; z: lighting rays; w: 0
     float4 sky;               // rgb: sky radiance, what a ray that leaves the scene sees
-    float4 voxelMin;          // xyz: world corner of the voxel lighting volume
+    float4 voxelMin;          // xyz: world corner of the voxel lighting volume; w: face columns (1 or 6)
     float4 voxelMax;          // xyz: far corner
     float4 trace;             // x: max distance (world); y: tan of the cone half angle; z: origin bias
                               // (world, along the probe normal); w: 0

@@ -66,6 +66,13 @@ struct SurfaceDirectLightConstants {
 };
 LUMINA_STATIC_ASSERT_SIZE(SurfaceDirectLightConstants, 16);
 
+// Voxel lighting keeps one radiance per voxel and axis-aligned face direction (+x, -x, +y, -y,
+// +z, -z: face f holds the light of surfaces whose normal points along it), side by side along
+// the texture's x: face f of voxel (x, y, z) is texel (f * dims.x + x, y, z). Without faces, the
+// two sides of a wall thinner than a voxel share one radiance, and the sunlit roof of a closed
+// room lights its inside (open_top_box was 5.5x too bright).
+#define LUMINA_VOXEL_FACES 6u
+
 // The voxel-lighting grid over the scene bounds.
 struct VoxelGridInfo {
     float4 minAndVoxelSize; // xyz: world corner of voxel (0,0,0); w: voxel side

@@ -4,12 +4,14 @@
 // layer's outgoing radiance over the scene bounds, the low-frequency fallback for ray hits
 // far from the camera (and the radiance radiosity rays read).
 //   inject:  one thread per texel of the listed tiles; a captured texel adds its radiance to
-//            the voxel holding its world position (fixed-point atomics: RGBA16F has none).
+//            the voxel holding its world position (fixed-point atomics: RGBA16F has none), into
+//            the faces its normal points along (LUMINA_VOXEL_FACES), each weighted by the squared
+//            normal component (the weights sum to 1).
 //            A texel buried in geometry (the floor under a block, the block's face on the floor:
 //            the global SDF is negative just in front of it) is seen by nothing and adds nothing,
 //            or it would darken the visible surfaces that share its voxels.
-//   resolve: one thread per voxel; rgb = mean radiance of the texels it received, a = 1 where
-//            it received any (coverage, which the lookup weights by), then zeroes the
+//   resolve: one thread per voxel face; rgb = weighted mean radiance of the texels it received,
+//            a = 1 where it received any (coverage, which the lookup weights by), then zeroes the
 //            accumulator for the next update.
 #include "sdf/sdf_scene_bindings.hlsli"
 #include "surface_cache/surface_cache_lighting_shared.h"
@@ -22,7 +24,8 @@ Texture2D<uint> gTileOwner : register(t8);
 StructuredBuffer<SurfaceCard> gCards : register(t9);
 Texture2D<float> gCaptureDepth : register(t10);
 StructuredBuffer<uint> gTiles : register(t11);
-RWStructuredBuffer<uint> gAccumulator : register(u0); // per voxel: r, g, b (fixed point), texel count
+// Per voxel face: r, g, b and the summed weight, in fixed point.
+RWStructuredBuffer<uint> gAccumulator : register(u0);
 LUMINA_UAV_FORMAT(rgba16f) RWTexture3D<float4> gVoxels : register(u1);
 
 #define LUMINA_TILE_OWNER gTileOwner
@@ -53,26 +56,36 @@ LUMINA_UAV_FORMAT(rgba16f) RWTexture3D<float4> gVoxels : register(u1);
     }
     // The final layer is finite by construction (combine); the clamp keeps the sum in range.
     float3 radiance = clamp(gFinal.Load(int3(texel, 0)).rgb, 0.0f, LUMINA_VOXEL_MAX_RADIANCE);
-    uint3 fixedPoint = uint3(radiance * LUMINA_VOXEL_FIXED_POINT_SCALE + 0.5f);
-    uint base = 4u * uint(voxel.x + dims.x * (voxel.y + dims.y * voxel.z));
-    uint ignored;
-    InterlockedAdd(gAccumulator[base + 0u], fixedPoint.x, ignored);
-    InterlockedAdd(gAccumulator[base + 1u], fixedPoint.y, ignored);
-    InterlockedAdd(gAccumulator[base + 2u], fixedPoint.z, ignored);
-    InterlockedAdd(gAccumulator[base + 3u], 1u, ignored);
+    float3 n = normalize(normal.xyz);
+    for (uint axis = 0u; axis < 3u; ++axis) {
+        float weight = n[axis] * n[axis];
+        uint fixedWeight = uint(weight * LUMINA_VOXEL_FIXED_POINT_SCALE + 0.5f);
+        if (fixedWeight == 0u) {
+            continue;
+        }
+        uint face = 2u * axis + (n[axis] < 0.0f ? 1u : 0u);
+        uint3 fixedPoint = uint3(radiance * weight * LUMINA_VOXEL_FIXED_POINT_SCALE + 0.5f);
+        uint base = 4u * uint(int(face) * dims.x + voxel.x + LUMINA_VOXEL_FACES * dims.x * (voxel.y + dims.y * voxel.z));
+        uint ignored;
+        InterlockedAdd(gAccumulator[base + 0u], fixedPoint.x, ignored);
+        InterlockedAdd(gAccumulator[base + 1u], fixedPoint.y, ignored);
+        InterlockedAdd(gAccumulator[base + 2u], fixedPoint.z, ignored);
+        InterlockedAdd(gAccumulator[base + 3u], fixedWeight, ignored);
+    }
 }
 
 [numthreads(4, 4, 4)] void resolve(uint3 id : SV_DispatchThreadID) {
-    uint3 dims = gConstants.grid.dims.xyz;
+    // id.x runs over the faces' side-by-side columns.
+    uint3 dims = uint3(LUMINA_VOXEL_FACES * gConstants.grid.dims.x, gConstants.grid.dims.yz);
     if (any(id >= dims)) {
         return;
     }
     uint base = 4u * (id.x + dims.x * (id.y + dims.y * id.z));
-    uint count = gAccumulator[base + 3u];
+    uint weight = gAccumulator[base + 3u];
     float4 value = float4(0.0f, 0.0f, 0.0f, 0.0f);
-    if (count > 0u) {
+    if (weight > 0u) {
         float3 sum = float3(gAccumulator[base + 0u], gAccumulator[base + 1u], gAccumulator[base + 2u]);
-        value = float4(sum / (float(count) * LUMINA_VOXEL_FIXED_POINT_SCALE), 1.0f);
+        value = float4(sum / float(weight), 1.0f);
     }
     gVoxels[id] = roundToHalf(value);
     for (uint c = 0u; c < 4u; ++c) {

@@ -1,14 +1,15 @@
 #ifndef LUMINA_VOXEL_LIGHTING_SAMPLING_HLSLI
 #define LUMINA_VOXEL_LIGHTING_SAMPLING_HLSLI
-// Radiance of the voxel lighting (voxel_lighting.hlsl) at an SDF hit p of unit normal n:
-// trilinear over the eight voxels around p - n * half a voxel, each weighted by its coverage
-// (a), so the empty voxels in front of the surface do not darken it. The lean along -n is the
-// normal weighting: an SDF hit lies in front of its surface (the tracer stops short, and the
-// zero crossing of a coarse mesh SDF sits up to about half a mesh voxel off the triangles), so
-// the voxels holding the surface's texels are behind p, never in front. Where that finds no
-// covered voxel, a second lookup one voxel further back (a hit stopped far short). Zero where
-// neither finds a surface. A wall thinner than a voxel shares its voxels with its other side:
-// the volume is the low-frequency fallback and blends both.
+// Radiance of the voxel lighting (voxel_lighting.hlsl) at an SDF hit p of unit normal n: of
+// each face n points along (LUMINA_VOXEL_FACES), weighted by the squared normal component, a
+// trilinear lookup over the eight voxels around p - n * half a voxel, each weighted by its
+// coverage (a), so the empty voxels in front of the surface do not darken it. The face keeps
+// the two sides of a thin wall apart: a ray from inside a room reads the inside. The lean along
+// -n is the normal weighting: an SDF hit lies in front of its surface (the tracer stops short,
+// and the zero crossing of a coarse mesh SDF sits up to about half a mesh voxel off the
+// triangles), so the voxels holding the surface's texels are behind p, never in front. Where
+// that finds no covered voxel, a second lookup one voxel further back (a hit stopped far short).
+// Zero where neither finds a surface.
 //
 //   Texture3D<float4> gVoxelLighting;    // the includer binds it
 //   #define LUMINA_VOXEL_LIGHTING gVoxelLighting
@@ -18,8 +19,9 @@
 #error "define LUMINA_VOXEL_LIGHTING before including voxel_lighting_sampling.hlsli"
 #endif
 
-// Coverage-weighted trilinear lookup at p: rgb, and the summed weight in a.
-float4 voxelLightingTrilinear(VoxelGridInfo grid, float3 p) {
+// Coverage-weighted trilinear lookup at p in the faces n points along: rgb, and the summed
+// weight in a.
+float4 voxelLightingTrilinear(VoxelGridInfo grid, float3 p, float3 n) {
     float voxel = grid.minAndVoxelSize.w;
     float3 local = (p - grid.minAndVoxelSize.xyz) / voxel - 0.5f;
     int3 base = int3(floor(local));
@@ -27,28 +29,35 @@ float4 voxelLightingTrilinear(VoxelGridInfo grid, float3 p) {
     int3 last = int3(grid.dims.xyz) - 1;
     float3 sum = float3(0.0f, 0.0f, 0.0f);
     float weight = 0.0f;
-    for (uint corner = 0u; corner < 8u; ++corner) {
-        int3 offset = int3(corner & 1u, (corner >> 1) & 1u, (corner >> 2) & 1u);
-        int3 v = base + offset;
-        if (any(v < 0) || any(v > last)) {
+    for (uint axis = 0u; axis < 3u; ++axis) {
+        float faceWeight = n[axis] * n[axis];
+        if (faceWeight <= 0.0f) {
             continue;
         }
-        float3 w3 = lerp(1.0f - f, f, float3(offset));
-        float4 texel = LUMINA_VOXEL_LIGHTING.Load(int4(v, 0));
-        float w = w3.x * w3.y * w3.z * texel.a;
-        sum += w * texel.rgb;
-        weight += w;
+        int faceColumn = int(2u * axis + (n[axis] < 0.0f ? 1u : 0u)) * int(grid.dims.x);
+        for (uint corner = 0u; corner < 8u; ++corner) {
+            int3 offset = int3(corner & 1u, (corner >> 1) & 1u, (corner >> 2) & 1u);
+            int3 v = base + offset;
+            if (any(v < 0) || any(v > last)) {
+                continue;
+            }
+            float3 w3 = lerp(1.0f - f, f, float3(offset));
+            float4 texel = LUMINA_VOXEL_LIGHTING.Load(int4(v.x + faceColumn, v.y, v.z, 0));
+            float w = faceWeight * w3.x * w3.y * w3.z * texel.a;
+            sum += w * texel.rgb;
+            weight += w;
+        }
     }
     return float4(weight > 0.0f ? sum / weight : float3(0.0f, 0.0f, 0.0f), weight);
 }
 
 float3 sampleVoxelLighting(VoxelGridInfo grid, float3 p, float3 n) {
     float voxel = grid.minAndVoxelSize.w;
-    float4 near = voxelLightingTrilinear(grid, p - 0.5f * voxel * n);
+    float4 near = voxelLightingTrilinear(grid, p - 0.5f * voxel * n, n);
     if (near.a > 0.0f) {
         return near.rgb;
     }
-    return voxelLightingTrilinear(grid, p - 1.5f * voxel * n).rgb;
+    return voxelLightingTrilinear(grid, p - 1.5f * voxel * n, n).rgb;
 }
 
 #endif
