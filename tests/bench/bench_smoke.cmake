@@ -49,8 +49,7 @@ if(NOT rc EQUAL 0)
 endif()
 
 # Bad input: a clear message and exit code 2.
-foreach(bad "--techniques;magic" "--presets;ultra" "--techniques;lumen;--presets;ultra" "--pt-budgets;0"
-        "--scenes;,")
+foreach(bad "--techniques;magic" "--presets;ultra" "--pt-budgets;0" "--scenes;,")
   execute_process(COMMAND "${LUMINA}" bench ${bad} --out "${DIR}/bad" RESULT_VARIABLE rc ERROR_VARIABLE err)
   if(NOT rc EQUAL 2)
     message(FATAL_ERROR "lumina bench ${bad} exited with ${rc}, expected 2: ${err}")
