@@ -2,12 +2,18 @@
 """Plots `lumina bench` results: relMSE after the last frame against GPU time per frame, log-log,
 one curve per technique (its presets in order of cost), one panel per scene.
 
+The curves use frame_ms, the median over every frame of the run. Where a technique's frames
+cost much less once it has settled (lumen: after its surface cache converged, radiosity stops),
+a hollow marker joined by a dotted line shows that settled cost (settled_frame_ms) at the same
+error: the error after the last frame is the settled state's.
+
     python3 scripts/plot_bench.py bench/bench.csv bench/bench.png
 
 Needs python3-matplotlib (Debian). The title names the device, driver, API and commit that the
 CSV records, so a figure always says where it came from.
 """
 import csv
+import math
 import sys
 from collections import defaultdict
 
@@ -15,6 +21,21 @@ import matplotlib
 
 matplotlib.use("Agg")  # no display needed
 import matplotlib.pyplot as plt  # noqa: E402
+
+
+# A settled cost is drawn apart when it differs from the run's median by more than this factor.
+SETTLED_APART = 1.25
+
+
+def settled_ms(row):
+    """settled_frame_ms when it is there and differs from frame_ms by SETTLED_APART, else None."""
+    text = row.get("settled_frame_ms", "")
+    if not text:
+        return None
+    value, frame = float(text), float(row["frame_ms"])
+    if not (math.isfinite(value) and value > 0) or max(value, frame) < SETTLED_APART * min(value, frame):
+        return None
+    return value
 
 
 def main(argv):
@@ -39,9 +60,16 @@ def main(argv):
             runs.sort(key=lambda r: float(r["frame_ms"]))
             x = [float(r["frame_ms"]) for r in runs]
             y = [max(float(r["relmse_converged"]), 1e-12) for r in runs]
-            ax.plot(x, y, marker="o", label=technique)
+            (line,) = ax.plot(x, y, marker="o", label=technique)
+            settled_label = f"{technique}, settled frames"
             for r, xi, yi in zip(runs, x, y):
                 ax.annotate(r["preset"], (xi, yi), textcoords="offset points", xytext=(4, 4), fontsize=7)
+                settled = settled_ms(r)
+                if settled is not None:
+                    ax.plot([xi, settled], [yi, yi], linestyle=":", color=line.get_color(), linewidth=1)
+                    ax.plot([settled], [yi], marker="o", markerfacecolor="none", linestyle="none",
+                            color=line.get_color(), label=settled_label)
+                    settled_label = None
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_xlabel("GPU time per frame (ms)")

@@ -1,8 +1,9 @@
 // `lumina bench`: the run-time-against-error matrix. For every scene it renders (or reuses) a
-// path-traced reference, then runs each technique at each quality preset for a fixed number
-// of frames, timing every pass on the GPU and measuring the image against the reference at
-// frame 1 and after convergence. Writes bench.csv, bench.json and a log-log plot of error
-// against frame time (scripts/plot_bench.py, python3-matplotlib). docs/measurement.md.
+// path-traced reference, then runs each technique (direct, lumen, pathtracer) at each quality
+// preset for a fixed number of frames, timing every pass on the GPU and measuring the image
+// against the reference at frame 1 and after convergence. Writes bench.csv, bench.json and a
+// log-log plot of error against frame time (scripts/plot_bench.py, python3-matplotlib).
+// docs/measurement.md.
 #include "app/command.h"
 #include "gi/bench/bench_report.h"
 #include "gi/bench/reference_cache.h"
@@ -18,6 +19,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -27,10 +29,13 @@ namespace lumina::app {
 namespace {
 
 constexpr const char* kDefaultScenes = "cornell_box,cornell_box_point,open_top_box";
+// Lumen is asked for by name: on lavapipe its surface cache costs seconds a frame until it
+// converges and the path tracer's budgets grow with it (docs/measurement.md).
 constexpr const char* kDefaultTechniques = "direct,pathtracer";
 constexpr const char* kDefaultPresets = "low,medium,high";
-// The path tracer's per-frame budgets, in multiples of the direct renderer's frame time: equal
-// time and two larger budgets, so its curve of error against time has three points.
+// The path tracer's per-frame budgets, in multiples of a real-time technique's frame time
+// (equalTimeBase): equal time and two larger budgets, so its curve of error against time has
+// three points.
 constexpr const char* kDefaultBudgets = "1,4,16";
 constexpr uint32_t kDefaultSize = 128;
 constexpr uint32_t kDefaultFrames = 16;
@@ -53,6 +58,24 @@ std::vector<std::string> splitList(const std::string& flag, const std::string& t
     return items;
 }
 
+// The frame time the path tracer's budgets multiply: the median over presets of lumen's median
+// frame when lumen ran (the GI technique it is the ground truth for), else of direct's, else
+// one path-traced sample. Medians over the whole run, the frame_ms the plot puts on its x axis,
+// so an equal-time point sits above the technique it matches.
+gi::TimeBase equalTimeBase(const std::map<std::string, std::vector<double>>& realTimeFrameMs,
+                           double msPerSample) {
+    for (const char* technique : {"lumen", "direct"}) {
+        if (const auto found = realTimeFrameMs.find(technique); found != realTimeFrameMs.end()) {
+            return {.technique = technique, .ms = gi::median(found->second)};
+        }
+    }
+    return {.technique = "pathtracer sample", .ms = msPerSample};
+}
+
+bool contains(const std::vector<std::string>& list, const std::string& item) {
+    return std::ranges::find(list, item) != list.end();
+}
+
 std::string number(double value, int digits = 4) {
     char text[64];
     std::snprintf(text, sizeof text, "%.*g", digits, value);
@@ -69,7 +92,16 @@ void printRun(const std::string& scene, const gi::TechniqueRun& run) {
     std::cout << ": " << number(run.frameMs) << " ms/frame, relMSE " << number(first.relMse) << " -> "
               << number(last.relMse) << " (frame " << run.framesToConverge << "), indirect relMSE "
               << number(last.indirectRelMse) << ", FLIP " << number(last.flip) << ", "
-              << number(double(run.gpuMemoryBytes) / (1024.0 * 1024.0), 3) << " MiB\n";
+              << number(double(run.gpuMemoryBytes) / (1024.0 * 1024.0), 3) << " MiB";
+    if (!run.settledAfterFrame) {
+        std::cout << ", not settled";
+    } else if (*run.settledAfterFrame > 1) {
+        std::cout << ", settled after frame " << *run.settledAfterFrame;
+        if (run.settledFrameMs) {
+            std::cout << " (then " << number(*run.settledFrameMs) << " ms/frame)";
+        }
+    }
+    std::cout << '\n';
 }
 
 // scripts/plot_bench.py from the source tree the built-in scenes come from.
@@ -122,12 +154,16 @@ int runBench(const ParsedArgs& args) {
         budgets.push_back(budget);
     }
     for (const std::string& technique : techniques) {
-        if (technique != "direct" && technique != "pathtracer") {
-            throw UsageError("--techniques: unknown technique '" + technique + "' (direct, pathtracer)");
+        if (!contains({"direct", "lumen", "pathtracer"}, technique)) {
+            throw UsageError("--techniques: unknown technique '" + technique +
+                             "' (direct, lumen, pathtracer)");
         }
     }
+    // Lumen's presets take the direct presets' shadow maps: a preset must be both.
+    const bool lumen = contains(techniques, "lumen");
     for (const std::string& preset : presets) {
-        if (std::ranges::find(gi::directPresetNames(), preset) == gi::directPresetNames().end()) {
+        if (!contains(gi::directPresetNames(), preset) ||
+            (lumen && !contains(gi::lumenPresetNames(), preset))) {
             throw UsageError("--presets: unknown preset '" + preset + "' (low, medium, high)");
         }
     }
@@ -176,32 +212,35 @@ int runBench(const ParsedArgs& args) {
                   << reference.path.string() << " (" << number(reference.seconds, 3) << " s)\n";
 
         const gi::RunRequest run{.width = width, .height = height, .frames = frames, .seed = kPathTracerSeed};
-        std::vector<double> directFrameMs;
+        std::map<std::string, std::vector<double>> realTimeFrameMs;
         for (const std::string& technique : techniques) {
-            if (technique != "direct") {
+            if (technique == "pathtracer") {
                 continue;
             }
             for (const std::string& preset : presets) {
                 records.push_back({scene.name,
-                                   gi::runDirect(*device, pipelines, scene, preset, run, reference),
+                                   gi::runRealTime(*device, pipelines, scene, gi::parseGiTechnique(technique),
+                                                   preset, run, reference),
                                    reference.path.string()});
                 printRun(scene.name, records.back().run);
-                directFrameMs.push_back(records.back().run.frameMs);
+                realTimeFrameMs[technique].push_back(records.back().run.frameMs);
             }
         }
-        if (std::ranges::find(techniques, "pathtracer") != techniques.end()) {
-            // Equal time: as many samples per frame as fit in the direct renderer's median frame
-            // (at least one, which on a slow device costs more than equal time: the row says so).
+        if (contains(techniques, "pathtracer")) {
+            // Equal time: as many samples per frame as fit in the real-time frame (at least one,
+            // which on a slow device costs more than equal time: the row's frame_ms says so).
             const double msPerSample = gi::pathTracerMsPerSample(*device, pipelines, scene, width, height);
-            const double baseMs = directFrameMs.empty() ? msPerSample : gi::median(directFrameMs);
+            const gi::TimeBase base = equalTimeBase(realTimeFrameMs, msPerSample);
+            std::cout << "  " << scene.name << " / pathtracer: budgets in multiples of " << base.technique
+                      << " (" << number(base.ms) << " ms), " << number(msPerSample) << " ms per sample\n";
             for (double budget : budgets) {
                 gi::RunRequest ptRun = run;
                 ptRun.samplesPerFrame =
-                    uint32_t(std::clamp(std::floor(budget * baseMs / msPerSample), 1.0, 65536.0));
+                    uint32_t(std::clamp(std::floor(budget * base.ms / msPerSample), 1.0, 65536.0));
                 const std::string preset = number(budget, 3) + "x-time";
-                records.push_back({scene.name,
-                                   gi::runPathTracer(*device, pipelines, scene, preset, ptRun, reference),
-                                   reference.path.string()});
+                records.push_back(
+                    {scene.name, gi::runPathTracer(*device, pipelines, scene, preset, ptRun, reference),
+                     reference.path.string(), gi::TimeBudget{.multiple = budget, .base = base}});
                 printRun(scene.name, records.back().run);
             }
         }
@@ -237,29 +276,35 @@ Command benchCommand() {
         .name = "bench",
         .summary = "time every technique and preset and measure its error against the path tracer",
         .usage =
-            "lumina bench [--scenes A,B] [--techniques direct,pathtracer] [--presets low,medium,high] "
+            "lumina bench [--scenes A,B] [--techniques direct,lumen,pathtracer] [--presets low,medium,high] "
             "[--pt-budgets 1,4,16] [--size WxH] [--frames N] [--reference-spp N] [--cache DIR] [--out DIR]",
         .description =
             "For each scene, renders a path-traced reference with AOVs (or reuses the one cached for the "
             "same "
             "scene, size, samples and seed), then runs each technique at each preset for --frames frames "
-            "(default 16) at --size (default 128x128). The direct technique is the deferred renderer "
-            "(presets "
-            "set its shadow-map sizes); the path tracer runs at equal time with the direct renderer's median "
-            "frame (samples per frame chosen from its measured cost, at least 1) and at the other budgets of "
-            "--pt-budgets, accumulating across frames. Per configuration it records the median GPU time per "
-            "frame and per pass (timestamp queries), relMSE of the final image and of the indirect term "
-            "against the reference at frame 1 and after the last frame, mean FLIP, the frames to converge "
-            "(first checkpoint within 5% of the final error) and the GPU memory held. Writes DIR/bench.csv, "
-            "DIR/bench.json (default DIR: bench) with the commit, device, driver and API, and DIR/bench.png, "
-            "error against frame time on log-log axes (python3-matplotlib). docs/measurement.md has the "
-            "columns.",
+            "(default 16) at --size (default 128x128). direct is the deferred renderer (presets set its "
+            "shadow-map sizes); lumen adds the lumen GI (SDFs, surface cache, screen probes; presets are "
+            "lumen's "
+            "with direct's shadow maps of the same name); the path tracer accumulates across frames with "
+            "per-frame budgets in multiples of a real-time frame: lumen's median frame when lumen runs, else "
+            "direct's (samples per frame chosen from its measured cost, at least 1). Per configuration it "
+            "records the median GPU time per frame and per pass (timestamp queries), the settled frame time "
+            "(median over the frames after lumen's surface cache converged), relMSE of the final image and "
+            "of "
+            "the indirect term (what indirect light adds at the primary hit) against the reference at frame "
+            "1 "
+            "and after the last frame, mean FLIP, the frames to converge (first checkpoint within 5% of the "
+            "final error), the GPU memory held and the NaN/Inf pixels. Writes DIR/bench.csv, DIR/bench.json "
+            "(default DIR: bench) with the commit, device, driver and API, and DIR/bench.png, error against "
+            "frame time on log-log axes (python3-matplotlib). lumen is not in the default list: on lavapipe "
+            "it costs seconds a frame until its surface cache converges; name it with --techniques. "
+            "docs/measurement.md has the columns.",
         .flags = {{"scenes", "LIST",
                    "comma-separated scenes (default cornell_box,cornell_box_point,open_top_box)"},
-                  {"techniques", "LIST", "direct, pathtracer (default both)"},
-                  {"presets", "LIST", "presets of the direct renderer: low, medium, high (default all)"},
+                  {"techniques", "LIST", "direct, lumen, pathtracer (default direct,pathtracer)"},
+                  {"presets", "LIST", "presets of direct and lumen: low, medium, high (default all)"},
                   {"pt-budgets", "LIST",
-                   "path-tracer frame budgets in multiples of the direct frame (default 1,4,16)"},
+                   "path-tracer frame budgets in multiples of lumen's frame, else direct's (default 1,4,16)"},
                   {"reference-spp", "N", "samples per pixel of the references (default 256)"},
                   {"cache", "DIR", "where references are kept (default $LUMINA_CACHE_DIR/references)"},
                   {"no-plot", "", "write the CSV and JSON only"}},

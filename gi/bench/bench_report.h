@@ -5,6 +5,7 @@
 #include "gi/bench/technique_runs.h"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,10 +20,22 @@ struct BenchContext {
     uint32_t referenceSpp = 0;
 };
 
+// What the path tracer's frame budgets are multiples of (app/commands/bench_command.cpp).
+struct TimeBase {
+    std::string technique; // "lumen", "direct", or "pathtracer sample"
+    double ms = 0.0;       // its median frame time (one sample's time for the last)
+};
+
+struct TimeBudget {
+    double multiple = 1.0; // 1: equal time
+    TimeBase base;
+};
+
 struct BenchRecord {
     std::string scene;
     TechniqueRun run;
     std::string referencePath;
+    std::optional<TimeBudget> budget{}; // path tracer only
 };
 
 void writeBenchCsv(const std::filesystem::path& path, const BenchContext& context,

@@ -2,9 +2,10 @@
 
 #include "gi/core/frame_context.h"
 #include "gi/deferred/buffer_readback.h"
-#include "gi/deferred/deferred_renderer.h"
+#include "gi/frame/frame_renderer.h"
 #include "gi/gpu_scene/gpu_scene.h"
 #include "gi/measure/compare.h"
+#include "gi/measure/metrics.h"
 #include "gi/pathtracer/path_tracer.h"
 #include "gi/pathtracer/path_tracer_scene.h"
 
@@ -30,22 +31,12 @@ const std::map<std::string, DirectPreset>& directPresets() {
     return presets;
 }
 
-uint64_t nonFiniteCount(const image::Image& image) {
-    uint64_t count = 0;
-    for (const char* c : {"R", "G", "B"}) {
-        for (float v : image.channel(c)) {
-            count += std::isfinite(v) ? 0 : 1;
-        }
-    }
-    return count;
-}
-
 // Measures one checkpoint: the final image and the indirect term against the reference.
 Checkpoint measure(uint32_t frame, const image::Image& finalImage, const image::Image& indirect,
                    const Reference& reference, uint64_t& nonFinite) {
     const image::Image referenceIndirect = rgbOf(reference.image, "indirect");
     const measure::CompareResult final = measure::compareImages(reference.image, finalImage);
-    nonFinite += nonFiniteCount(finalImage) + nonFiniteCount(indirect);
+    nonFinite += final.test.total() + measure::countNonFinite(indirect).total();
     return {.frame = frame,
             .relMse = final.linear.relMse,
             .indirectRelMse = measure::relMse(referenceIndirect, indirect),
@@ -57,24 +48,36 @@ image::Image rgbOnly(image::Image image) {
     return image;
 }
 
-// Runs `frames` frames through `recordFrame`, timing each, and measures the checkpoints
-// through `readImages` (final image, indirect term).
+// How runFrames drives a technique.
+struct FrameHooks {
+    std::function<void(FrameContext&)> record;
+    std::function<std::pair<image::Image, image::Image>()> readImages; // final image, indirect term
+    std::function<bool()> settled; // after a frame: its per-frame work has stopped changing
+};
+
+// Runs `frames` frames, timing each (all of them, and apart those after the technique settled),
+// and measures the checkpoints.
 void runFrames(rhi::IDevice& device, PipelineCache& pipelines, const RunRequest& request,
-               const Reference& reference, const std::function<void(FrameContext&)>& recordFrame,
-               const std::function<std::pair<image::Image, image::Image>()>& readImages, TechniqueRun& run) {
+               const Reference& reference, const FrameHooks& hooks, TechniqueRun& run) {
     TimingTable table;
+    TimingTable settledTable;
     rhi::CommandListHandle list = device.createCommandList();
     rhi::IQueue& queue = device.queue(rhi::QueueType::Graphics);
     const std::vector<uint32_t> checkpoints = checkpointFrames(request.frames);
     for (uint32_t frameIndex = 0; frameIndex < request.frames; ++frameIndex) {
         list->begin();
         FrameContext frame(pipelines, *list, frameIndex);
-        recordFrame(frame);
+        hooks.record(frame);
         list->end();
         queue.waitForValue(queue.submit(*list));
         table.addFrame(list->timerResults(), frame.skipped());
+        if (run.settledAfterFrame) {
+            settledTable.addFrame(list->timerResults(), frame.skipped());
+        } else if (hooks.settled()) {
+            run.settledAfterFrame = frameIndex + 1;
+        }
         if (std::ranges::find(checkpoints, frameIndex + 1) != checkpoints.end()) {
-            auto [finalImage, indirect] = readImages();
+            auto [finalImage, indirect] = hooks.readImages();
             run.checkpoints.push_back(
                 measure(frameIndex + 1, finalImage, indirect, reference, run.nonFinitePixels));
             if (frameIndex + 1 == request.frames) {
@@ -85,7 +88,22 @@ void runFrames(rhi::IDevice& device, PipelineCache& pipelines, const RunRequest&
     run.frames = request.frames;
     run.frameMs = table.medianFrameMs();
     run.passes = table.passes();
+    if (settledTable.recordedFrames() != 0) {
+        run.settledFrameMs = settledTable.medianFrameMs();
+        run.settledPasses = settledTable.passes();
+    }
     run.framesToConverge = framesToConverge(run.checkpoints);
+}
+
+// What the renderer's composite adds for indirect light; black without GI.
+image::Image readIndirectRadiance(rhi::IDevice& device, const FrameRenderer& renderer) {
+    const rhi::TextureHandle irradiance = renderer.indirect();
+    if (!irradiance) {
+        return image::Image::rgb(renderer.deferred().width(), renderer.deferred().height());
+    }
+    return indirectRadiance(readTextureImage(device, *irradiance),
+                            readTextureImage(device, *renderer.deferred().gbuffer().albedo),
+                            renderer.indirectScale());
 }
 
 void checkRequest(const RunRequest& request, const Reference& reference) {
@@ -136,36 +154,57 @@ uint32_t framesToConverge(const std::vector<Checkpoint>& checkpoints, double tol
     return checkpoints.back().frame;
 }
 
-TechniqueRun runDirect(rhi::IDevice& device, PipelineCache& pipelines, const scene::Scene& scene,
-                       const std::string& preset, const RunRequest& request, const Reference& reference) {
+image::Image indirectRadiance(const image::Image& irradiance, const image::Image& albedo, float scale) {
+    if (!irradiance.sameSize(albedo)) {
+        throw image::ImageError("indirect radiance: irradiance is " + std::to_string(irradiance.width()) +
+                                "x" + std::to_string(irradiance.height()) + ", albedo " +
+                                std::to_string(albedo.width()) + "x" + std::to_string(albedo.height()));
+    }
+    image::Image radiance = image::Image::rgb(irradiance.width(), irradiance.height());
+    for (const char* c : {"R", "G", "B"}) {
+        std::ranges::transform(irradiance.channel(c), albedo.channel(c), radiance.channel(c).begin(),
+                               [scale](float e, float a) { return scale * e * a; });
+    }
+    return radiance;
+}
+
+TechniqueRun runRealTime(rhi::IDevice& device, PipelineCache& pipelines, const scene::Scene& scene,
+                         GiTechnique technique, const std::string& preset, const RunRequest& request,
+                         const Reference& reference) {
     checkRequest(request, reference);
     const DirectPreset shadows = directPreset(preset);
-    TechniqueRun run{
-        .technique = "direct", .preset = preset, .width = request.width, .height = request.height};
+    FrameRendererSettings settings;
+    settings.technique = technique;
+    settings.deferred = {.width = request.width,
+                         .height = request.height,
+                         .sunShadowSize = shadows.sunShadowSize,
+                         .pointShadowSize = shadows.pointShadowSize,
+                         .log = [](std::string_view) {}};
+    if (technique == GiTechnique::Lumen) {
+        settings.lumen = lumenPreset(preset, scene);
+    }
+    TechniqueRun run{.technique = giTechniqueName(technique),
+                     .preset = preset,
+                     .width = request.width,
+                     .height = request.height};
     const uint64_t baseline = device.allocatedMemoryBytes();
     GpuScene gpuScene(device, scene);
-    DeferredRenderer renderer(device, scene, gpuScene,
-                              {.width = request.width,
-                               .height = request.height,
-                               .sunShadowSize = shadows.sunShadowSize,
-                               .pointShadowSize = shadows.pointShadowSize,
-                               .log = [](std::string_view) {}});
-    runFrames(
-        device, pipelines, request, reference, [&](FrameContext& frame) { renderer.render(frame); },
-        [&] {
-            image::Image hdr = rgbOnly(readTextureImage(device, *renderer.hdr()));
-            // What GI adds (indirect x albedo) is the final image less the direct light.
-            image::Image indirect = rgbOnly(readTextureImage(device, *renderer.direct()));
-            for (const char* c : {"R", "G", "B"}) {
-                std::span<float> out = indirect.channel(c);
-                std::span<const float> total = hdr.channel(c);
-                for (size_t i = 0; i < out.size(); ++i) {
-                    out[i] = total[i] - out[i];
-                }
-            }
-            return std::pair{std::move(hdr), std::move(indirect)};
-        },
-        run);
+    FrameRenderer renderer(device, scene, gpuScene, std::move(settings));
+    runFrames(device, pipelines, request, reference,
+              {.record = [&](FrameContext& frame) { renderer.render(frame); },
+               .readImages =
+                   [&] {
+                       return std::pair{rgbOnly(readTextureImage(device, *renderer.deferred().hdr())),
+                                        readIndirectRadiance(device, renderer)};
+                   },
+               // Lumen's surface cache stops its radiosity once converged; the direct renderer
+               // draws its shadow maps in the first frame only.
+               .settled =
+                   [&] {
+                       const LumenGi* lumen = renderer.lumen();
+                       return lumen == nullptr || lumen->surfaceCache().radiositySchedule().converged();
+                   }},
+              run);
     run.gpuMemoryBytes = device.allocatedMemoryBytes() - baseline;
     return run;
 }
@@ -185,18 +224,20 @@ TechniqueRun runPathTracer(rhi::IDevice& device, PipelineCache& pipelines, const
     const PathTracerScene traced(device, scene);
     PathTracer tracer(device, traced, scene,
                       {.width = request.width, .height = request.height, .seed = request.seed, .aovs = true});
-    runFrames(
-        device, pipelines, request, reference,
-        [&](FrameContext& frame) { tracer.recordSamples(frame, run.samplesPerFrame); },
-        [&] {
-            const PathTracerResult result = tracer.readResult();
-            image::Image radiance = image::Image::rgb(request.width, request.height);
-            for (const char* c : {"R", "G", "B"}) {
-                std::ranges::copy(result.image.channel(c), radiance.channel(c).begin());
-            }
-            return std::pair{std::move(radiance), rgbOf(result.image, "indirect")};
-        },
-        run);
+    runFrames(device, pipelines, request, reference,
+              {.record = [&](FrameContext& frame) { tracer.recordSamples(frame, run.samplesPerFrame); },
+               .readImages =
+                   [&] {
+                       const PathTracerResult result = tracer.readResult();
+                       image::Image radiance = image::Image::rgb(request.width, request.height);
+                       for (const char* c : {"R", "G", "B"}) {
+                           std::ranges::copy(result.image.channel(c), radiance.channel(c).begin());
+                       }
+                       return std::pair{std::move(radiance), rgbOf(result.image, "indirect")};
+                   },
+               // Every frame does the same work.
+               .settled = [] { return true; }},
+              run);
     run.gpuMemoryBytes = device.allocatedMemoryBytes() - baseline;
     return run;
 }

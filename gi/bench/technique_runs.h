@@ -3,19 +3,30 @@
 // a number of frames; its images at checkpoint frames (1, 2, 4, ... and the last) are
 // measured against the path-traced reference, and its passes are timed by GPU timestamps.
 //
-// Techniques so far:
+// Techniques:
 //   direct      the deferred renderer (GBuffer, shadows, direct light, composite), no GI;
 //               presets low, medium, high set the shadow-map resolutions.
+//   lumen       the same deferred renderer plus the lumen GI (SDFs, surface cache, screen
+//               probes) through FrameRenderer; presets are lumenPreset's (gi/frame/gi_technique.h)
+//               with the direct preset's shadow maps of the same name.
 //   pathtracer  the reference path tracer with a fixed number of samples per pixel per frame,
 //               accumulating across frames (so "converged" is many frames' samples).
+//
+// One definition of the indirect term for every technique: the radiance that indirect light
+// adds at the primary hit. For the real-time techniques that is what the composite adds,
+// indirectScale x E x albedo (E the GI's irradiance, albedo the GBuffer's; black for direct);
+// for the path tracer, its paths of two or more bounces (the `indirect` AOV), which is what the
+// reference's `indirect` AOV holds too.
 #include "gi/bench/reference_cache.h"
 #include "gi/core/pipeline_cache.h"
 #include "gi/core/timing_table.h"
+#include "gi/frame/gi_technique.h"
 #include "gi/image/image.h"
 #include "gi/scene/scene.h"
 #include "rhi/device.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,10 +48,18 @@ struct TechniqueRun {
     uint32_t samplesPerFrame = 0; // path tracer only
     double frameMs = 0.0;         // median GPU time of a frame
     std::vector<PassTiming> passes{};
+    // The frame after which the technique's per-frame work stopped changing: lumen's surface
+    // cache converged (radiosity stops), 1 for direct (frame 1 draws the shadow maps) and the
+    // path tracer; none when lumen's surface cache did not converge within the run.
+    std::optional<uint32_t> settledAfterFrame{};
+    // Median GPU time of the frames after settledAfterFrame (what a frame costs once converged)
+    // and the passes over those frames; none when no frame came after it.
+    std::optional<double> settledFrameMs{};
+    std::vector<PassTiming> settledPasses{};
     std::vector<Checkpoint> checkpoints{}; // ascending frames; the last is "converged"
     uint32_t framesToConverge = 0;         // first checkpoint within 5% of the last one's relMSE
     uint64_t gpuMemoryBytes = 0;           // device memory the technique (with its scene upload) holds
-    uint64_t nonFinitePixels = 0;          // in any checkpoint image; must be 0
+    uint64_t nonFinitePixels = 0;          // in any checkpoint's final or indirect image; must be 0
     image::Image finalImage{};             // R, G, B after the last frame
 };
 
@@ -52,8 +71,8 @@ struct RunRequest {
     uint32_t seed = 1;
 };
 
-// The shadow-map sizes of a direct-renderer preset; std::invalid_argument naming the presets
-// for an unknown name.
+// The shadow-map sizes of a direct-renderer preset (lumen's presets of the same name use them
+// too); std::invalid_argument naming the presets for an unknown name.
 struct DirectPreset {
     uint32_t sunShadowSize = 2048;
     uint32_t pointShadowSize = 512;
@@ -61,8 +80,11 @@ struct DirectPreset {
 DirectPreset directPreset(const std::string& name);
 const std::vector<std::string>& directPresetNames();
 
-TechniqueRun runDirect(rhi::IDevice& device, PipelineCache& pipelines, const scene::Scene& scene,
-                       const std::string& preset, const RunRequest& request, const Reference& reference);
+// A real-time technique (direct or lumen) through FrameRenderer. Throws std::invalid_argument
+// for an unknown preset and what LumenGi throws (a full surface-cache atlas).
+TechniqueRun runRealTime(rhi::IDevice& device, PipelineCache& pipelines, const scene::Scene& scene,
+                         GiTechnique technique, const std::string& preset, const RunRequest& request,
+                         const Reference& reference);
 
 TechniqueRun runPathTracer(rhi::IDevice& device, PipelineCache& pipelines, const scene::Scene& scene,
                            const std::string& preset, const RunRequest& request, const Reference& reference);
@@ -76,5 +98,10 @@ double pathTracerMsPerSample(rhi::IDevice& device, PipelineCache& pipelines, con
 std::vector<uint32_t> checkpointFrames(uint32_t frames);
 // The first checkpoint whose relMSE is within `tolerance` (relative) of the last one's.
 uint32_t framesToConverge(const std::vector<Checkpoint>& checkpoints, double tolerance = 0.05);
+
+// The radiance a real-time renderer's indirect term adds, as its composite computes it:
+// scale x irradiance x albedo per channel (R, G, B of both; the sizes must match, ImageError
+// otherwise).
+image::Image indirectRadiance(const image::Image& irradiance, const image::Image& albedo, float scale);
 
 } // namespace lumina::gi

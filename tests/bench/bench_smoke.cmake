@@ -1,6 +1,7 @@
 # `lumina bench` end to end at a small size (not a timed test): run it twice on one fresh cache
 # folder, check the files and figures (check_bench_output.py), and that the second run reused
-# the references instead of rendering them again.
+# the references instead of rendering them again; then once with lumen (low preset, a few frames:
+# on lavapipe its surface-cache radiosity costs about a second a frame until it converges).
 # cmake -DLUMINA=... -DCHECK=... -DDIR=... -P this
 foreach(var LUMINA CHECK DIR)
   if(NOT DEFINED ${var})
@@ -30,6 +31,21 @@ if(NOT first_out MATCHES "reference cornell_box_point: rendered")
 endif()
 if(NOT second_out MATCHES "reference cornell_box_point: reused" OR NOT second_out MATCHES "reference open_top_box: reused")
   message(FATAL_ERROR "the second run rendered its references again instead of reusing them")
+endif()
+
+# Lumen beside direct, and the path tracer at lumen's frame time.
+set(lumen_args bench --scenes cornell_box_point --techniques direct,lumen,pathtracer --presets low
+                --size 32x32 --frames 3 --reference-spp 16 --pt-budgets 1 --cache "${DIR}/cache"
+                --out "${DIR}/lumen" --validation)
+execute_process(COMMAND "${LUMINA}" ${lumen_args} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message(STATUS "[lumen] lumina bench -> ${rc}\n${out}${err}")
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "[lumen] lumina bench exited with ${rc}")
+endif()
+# One scene x (direct low + lumen low + one path-tracer budget).
+execute_process(COMMAND python3 "${CHECK}" "${DIR}/lumen" 3 RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "[lumen] the bench's output failed its checks")
 endif()
 
 # Bad input: a clear message and exit code 2.

@@ -1,4 +1,5 @@
-// The CPU halves of the bench: checkpoint schedule, convergence rule, reference cache keys.
+// The CPU halves of the bench: checkpoint schedule, convergence rule, reference cache keys, the
+// indirect term of the real-time techniques.
 #include "gi/bench/reference_cache.h"
 #include "gi/bench/technique_runs.h"
 #include "gi/scene/scene_loader.h"
@@ -61,6 +62,32 @@ TEST(BenchPresets, UnknownPresetsAreNamed) {
         FAIL() << "no exception";
     } catch (const std::invalid_argument& e) {
         EXPECT_NE(std::string(e.what()).find("ultra"), std::string::npos);
+    }
+}
+
+TEST(BenchIndirect, IsWhatTheCompositeAdds) {
+    // scale x E x albedo per channel, as shaders/deferred/composite.hlsl adds it.
+    image::Image irradiance = image::Image::rgb(2, 1);
+    image::Image albedo = image::Image::rgba(2, 1);
+    irradiance.channel("R")[0] = 3.0f;
+    irradiance.channel("G")[1] = 2.0f;
+    irradiance.channel("B")[1] = 5.0f;
+    albedo.channel("R")[0] = 0.5f;
+    albedo.channel("G")[1] = 0.25f;
+    albedo.channel("B")[1] = 0.0f;
+    const image::Image radiance = indirectRadiance(irradiance, albedo, 0.5f);
+    EXPECT_EQ(radiance.channelNames(), (std::vector<std::string>{"R", "G", "B"}));
+    EXPECT_FLOAT_EQ(radiance.at("R", 0, 0), 0.75f);
+    EXPECT_FLOAT_EQ(radiance.at("G", 1, 0), 0.25f);
+    EXPECT_EQ(radiance.at("B", 1, 0), 0.0f) << "black albedo reflects nothing";
+    EXPECT_EQ(radiance.at("G", 0, 0), 0.0f);
+    EXPECT_THROW(indirectRadiance(irradiance, image::Image::rgb(1, 2), 1.0f), image::ImageError);
+}
+
+TEST(BenchPresets, EveryLumenPresetHasShadowMaps) {
+    // A lumen run takes the direct preset of the same name for its shadow maps.
+    for (const std::string& name : lumenPresetNames()) {
+        EXPECT_NO_THROW(directPreset(name)) << name;
     }
 }
 

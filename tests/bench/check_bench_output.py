@@ -16,6 +16,37 @@ def fail(message):
     sys.exit(1)
 
 
+def check_settled(key, r):
+    """settled_after_frame: 1 for direct and the path tracer, lumen's surface cache converging
+    (or empty: not within the run); settled_frame_ms for the frames after it."""
+    frames = int(r["frames"])
+    after = r["settled_after_frame"]
+    if r["technique"] != "lumen" and after != "1":
+        fail(f"{key}: settled_after_frame {after!r}, expected 1")
+    if after and not 1 <= int(after) <= frames:
+        fail(f"{key}: settled_after_frame {after} outside 1..{frames}")
+    settled = r["settled_frame_ms"]
+    if bool(settled) != bool(after and int(after) < frames):
+        fail(f"{key}: settled_frame_ms {settled!r} with settled_after_frame {after!r} of {frames} frames")
+    if settled and not (math.isfinite(float(settled)) and float(settled) > 0):
+        fail(f"{key}: settled_frame_ms {settled}")
+
+
+def check_budget_bases(report):
+    """The path tracer's budgets multiply lumen's frame where lumen ran, else direct's."""
+    ran = {}
+    for run in report["runs"]:
+        ran.setdefault(run["scene"], set()).add(run["technique"])
+    for run in report["runs"]:
+        if run["technique"] != "pathtracer":
+            continue
+        expected = next((t for t in ("lumen", "direct") if t in ran[run["scene"]]), "pathtracer sample")
+        budget = run.get("budget", {})
+        if budget.get("of") != expected or not budget.get("base_ms", 0) > 0:
+            fail(f"{run['scene']}/pathtracer/{run['preset']}: budget {budget}, "
+                 f"expected multiples of {expected}")
+
+
 def main():
     directory, expected = sys.argv[1], int(sys.argv[2])
     for name in ("bench.csv", "bench.json", "bench.png"):
@@ -53,10 +84,16 @@ def main():
             fail(f"{key}: non-finite pixels")
         if not 0 < int(r["frames_to_converge"]) <= int(r["frames"]):
             fail(f"{key}: frames_to_converge {r['frames_to_converge']}")
-        if r["technique"] == "direct" and not r["passes_ms"].count("gbuffer="):
+        if r["technique"] in ("direct", "lumen") and not r["passes_ms"].count("gbuffer="):
             fail(f"{key}: no gbuffer pass timing in '{r['passes_ms']}'")
+        if r["technique"] == "lumen":
+            for prefix in ("sdf: ", "surface cache: ", "screen probes: "):
+                if prefix not in r["passes_ms"]:
+                    fail(f"{key}: no '{prefix}...' pass timing in '{r['passes_ms']}'")
+        check_settled(key, r)
         if not r["device"] or not r["commit"]:
             fail(f"{key}: device or commit missing")
+    check_budget_bases(report)
     by_technique = {}
     for r in rows:
         by_technique.setdefault((r["scene"], r["technique"]), []).append(r)
@@ -69,9 +106,15 @@ def main():
                     fail(f"{scene}/pathtracer/{r['preset']}: relMSE did not fall ({first} -> {last})")
                 if int(r["spp_per_frame"]) < 1:
                     fail(f"{scene}/pathtracer: spp_per_frame {r['spp_per_frame']}")
-            elif abs(first - last) > 1e-6 * max(first, 1e-9):
+            elif technique == "direct" and abs(first - last) > 1e-6 * max(first, 1e-9):
                 # The direct renderer is deterministic: frame 1 is already converged.
                 fail(f"{scene}/direct/{r['preset']}: relMSE changed over frames ({first} -> {last})")
+    # The direct renderer's indirect term is black; lumen's must not be.
+    black = {(r["scene"], r["preset"]): float(r["indirect_relmse_converged"])
+             for r in rows if r["technique"] == "direct"}
+    for r in (r for r in rows if r["technique"] == "lumen"):
+        if black.get((r["scene"], r["preset"])) == float(r["indirect_relmse_converged"]):
+            fail(f"{r['scene']}/lumen/{r['preset']}: indirect error equals the direct renderer's (black)")
     print(f"check_bench_output: {len(rows)} configurations, all figures sane")
 
 
