@@ -31,6 +31,11 @@ public:
 
     void render(FrameContext& frame);
     void setCamera(const scene::Camera& camera);
+    // A camera cut: the next frame's GI keeps no temporal history (screen probes and the
+    // screen-space filter), so nothing of the old view is reprojected into the new one. Call
+    // with setCamera when the new view does not follow from the last. The surface cache is
+    // view-independent and keeps its lighting.
+    void cameraCut();
 
     GiTechnique technique() const { return technique_; }
     DeferredRenderer& deferred() { return deferred_; }
