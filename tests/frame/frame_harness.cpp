@@ -12,6 +12,9 @@ gi::FrameRendererSettings rendererSettings(const scene::Scene& scene, const Fram
     out.deferred = {.width = settings.width, .height = settings.height, .log = [](std::string_view) {}};
     if (settings.technique == gi::GiTechnique::Lumen) {
         out.lumen = testLumenSettings(settings.preset, scene);
+        if (settings.probeSpacing != 0) {
+            out.lumen->probes.probeSpacing = settings.probeSpacing;
+        }
     }
     return out;
 }

@@ -26,6 +26,7 @@ struct FrameHarnessSettings {
     uint32_t height = 64;
     gi::GiTechnique technique = gi::GiTechnique::Lumen;
     std::string preset = "low";
+    uint32_t probeSpacing = 0; // pixels per screen-probe edge; 0: the preset's
 };
 
 class FrameHarness {

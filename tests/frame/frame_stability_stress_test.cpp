@@ -13,7 +13,6 @@
 #include "tests/rhi/gpu_test_fixture.h"
 
 #include <cmath>
-#include <cstdlib>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -125,10 +124,11 @@ TEST_P(FrameStabilityStress, StaticCameraStaysFiniteAndSteadyFor1000Frames) {
             wanderFrame = frame;
         }
     }
-    std::printf("%s %ux%u: settled after %u frames; frame-to-frame relMSE over %u frames: mean %.3g, max %.3g "
-                "(frame %u); every %uth frame from %u against frame %u: relMSE at most %.3g (frame %u)\n",
-                kScene, kSize, kSize, settledAt, steps, sumStep / std::max(steps, 1u), maxStep, maxStepFrame,
-                kCheckEvery, kWanderFrom, h.frames(), wander, wanderFrame);
+    std::printf(
+        "%s %ux%u: settled after %u frames; frame-to-frame relMSE over %u frames: mean %.3g, max %.3g "
+        "(frame %u); every %uth frame from %u against frame %u: relMSE at most %.3g (frame %u)\n",
+        kScene, kSize, kSize, settledAt, steps, sumStep / std::max(steps, 1u), maxStep, maxStepFrame,
+        kCheckEvery, kWanderFrom, h.frames(), wander, wanderFrame);
     h.timings().print(std::cout);
     EXPECT_LT(maxStep, kMaxFrameToFrameRelMse) << "at frame " << maxStepFrame;
     EXPECT_LT(wander, kMaxWanderRelMse) << "at frame " << wanderFrame;
