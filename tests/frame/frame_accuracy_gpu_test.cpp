@@ -22,8 +22,10 @@ namespace lumina::test {
 namespace {
 
 constexpr uint32_t kSize = 64;
-// Frames after the surface cache converged: the probes' temporal filters keep 0.85 of the
-// history a frame at the low preset (0.85^48 < 0.1%), the screen filter 0.7.
+// Frames after the surface cache converged, as `lumina render` runs without --frames: the
+// probes' temporal filter keeps 0.85 of the history a frame at the low preset (0.85^48 < 0.1%),
+// the screen filter 0.7; the probes' outlier clamp makes them slower than that where a texel
+// sees the light (docs/gi_tests.md, stability).
 constexpr uint32_t kSettleFrames = 48;
 constexpr uint32_t kReferenceSamples = 256;
 
@@ -36,10 +38,6 @@ struct FurnaceCase {
     double worstTolerance; // max over pixels and channels of |x / exact - 1|
 };
 
-// Measured on lavapipe (64x64, low preset; docs/gi_tests.md): furnace_0.5 mean -0.017%, worst
-// pixel 0.15%; furnace_0.8 mean -0.51%, worst pixel 1.09%.
-// The surface cache alone is within 0.31% at rho = 0.8 (docs/surface_cache.md); the screen
-// probes' SH, their half-float atlas and the screen filter add the rest.
 // Readable parameters in gtest's and ctest's test lists.
 void PrintTo(const FurnaceCase& c, std::ostream* out) {
     *out << c.scene;
@@ -91,6 +89,10 @@ std::string furnaceName(const ::testing::TestParamInfo<std::tuple<rhi::Api, Furn
     return std::string(rhi::apiName(std::get<0>(info.param))) + "_" + scene;
 }
 
+// Measured on lavapipe (64x64, low preset; docs/gi_tests.md): furnace_0.5 mean -0.017%, worst
+// pixel 0.15%; furnace_0.8 mean -0.51%, worst pixel 1.09%.
+// The surface cache alone is within 0.31% at rho = 0.8 (docs/surface_cache.md); the screen
+// probes' SH, their half-float atlas and the screen filter add the rest.
 INSTANTIATE_TEST_SUITE_P(Scenes, FrameFurnaceGpu,
                          ::testing::Combine(::testing::ValuesIn(app::compiledApis()),
                                             ::testing::Values(FurnaceCase{"furnace_0.5", 0.5, 0.005, 0.01},

@@ -51,7 +51,7 @@ public:
     image::Image read(const rhi::TextureHandle& texture) { return gi::readTextureImage(device_, *texture); }
 
     gi::FrameRenderer& renderer() { return renderer_; }
-    const gi::LumenGi& lumen() const { return *renderer_.lumen(); }
+    const gi::LumenGi& lumen() const { return *renderer_.lumen(); } // the lumen technique only
     const scene::Scene& scene() const { return scene_; }
     gi::PipelineCache& pipelines() { return pipelines_; }
     uint32_t frames() const { return frames_; }

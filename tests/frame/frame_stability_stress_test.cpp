@@ -2,8 +2,9 @@
 //   - a static camera for 1,000 frames: every valid probe's history and irradiance tile, the
 //     screen irradiance and the final HDR stay finite (read back every 100 frames), the image
 //     changes little from frame to frame once converged, and does not drift;
-//   - a camera cut (FrameRenderer::setCamera + cameraCut): within a stated number of frames
-//     the image is close to a long-converged render from the new camera.
+//   - camera cuts, by FrameRenderer::setCamera alone (histories reprojected) and with
+//     cameraCut() (no history): within a stated number of frames each is close to a
+//     long-converged render from the new camera.
 // Bounds are the figures measured on lavapipe when this was written, with margin; the figures
 // are in the comments and in docs/gi_tests.md.
 #include "gi/measure/metrics.h"
