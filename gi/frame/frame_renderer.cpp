@@ -25,6 +25,12 @@ void FrameRenderer::setCamera(const scene::Camera& camera) {
     deferred_.setCamera(camera);
 }
 
+void FrameRenderer::cameraCut() {
+    if (lumen_) {
+        lumen_->resetHistory();
+    }
+}
+
 void FrameRenderer::render(FrameContext& frame) {
     if (!lumen_) {
         deferred_.render(frame);

@@ -31,6 +31,13 @@ public:
 
     void render(FrameContext& frame);
     void setCamera(const scene::Camera& camera);
+    // The next frame's GI keeps no temporal history (screen probes and the screen-space
+    // filter), so nothing of the old view is reprojected into the new one; the surface cache is
+    // view-independent and keeps its lighting. A camera cut in a static scene does not need it:
+    // both histories are reprojected in world space and kept only where the surface is the
+    // same (the Cornell box recovered within 4 frames so, and within 83 with cameraCut();
+    // docs/gi_tests.md). For cuts whose old history must not be reused.
+    void cameraCut();
 
     GiTechnique technique() const { return technique_; }
     DeferredRenderer& deferred() { return deferred_; }

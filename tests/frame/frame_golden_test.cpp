@@ -1,0 +1,252 @@
+// Goldens of the lumen frame (docs/goldens.md, docs/gi_tests.md): cornell_box and open_top_box
+// at 64x64, low preset with probes every 8 pixels, after a fixed kFrames frames: every
+// screen-probe pass's output, every surface-cache layer (the atlas region the cards occupy, one
+// texel in kAtlasStep^2), and the final frame. Regenerate with
+//   LUMINA_UPDATE_GOLDENS=1 ctest -L golden      (Debian 12's lavapipe only)
+//
+// Normalised as docs/goldens.md asks, so that one tolerance per kind of data serves both scenes:
+// radiance through the display transform (irradiance as the radiance E / pi of a white
+// Lambertian surface), positions into the scene's bounds, weights w as w / (1 + w), frame counts
+// over 255. Entries of invalid (sky) probes are never written by the passes after placement, so
+// they are zeroed before the compare.
+#include "gi/image/display.h"
+#include "gi/scene/scene_loader.h"
+#include "gi/screen_probes/screen_probe_readback.h"
+#include "shaders/screen_probes/screen_probe_shared.h"
+#include "tests/frame/frame_harness.h"
+#include "tests/golden/golden_checks.h"
+#include "tests/rhi/gpu_test_fixture.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace lumina::test {
+namespace {
+
+constexpr uint32_t kSize = 64;
+// The low preset (as the other frame tests), with the medium preset's probe spacing: 8 x 8
+// probes instead of 4 x 4, so each probe buffer's golden holds more than a handful of probes.
+constexpr uint32_t kProbeSpacing = 8;
+// Frames before the goldens are read: radiosity has run kFrames bounces, probes and screen have
+// kFrames frames of history (and lighting PDFs from it). Deterministic: the same frame indices
+// drive every jitter sequence.
+constexpr uint32_t kFrames = 8;
+// The atlas keeps one texel in kAtlasStep x kAtlasStep (the centre of each block): a card
+// (64 texels a side at least) keeps 8 x 8, a radiosity probe (4 x 4 texels) one in four.
+constexpr uint32_t kAtlasStep = 8;
+
+// Values in [0, 1] that come straight from rasterisation (albedo, normalised positions).
+constexpr GoldenTolerance kUnitRange{.meanAbsError = 0.002, .percentile = 0.99, .percentileError = 0.02};
+// Unit normals span [-1, 1].
+constexpr GoldenTolerance kNormals{.meanAbsError = 0.004, .percentile = 0.99, .percentileError = 0.04};
+// Emission (radiance, exact) and the material index, which may differ at silhouettes.
+constexpr GoldenTolerance kMaterial{.meanAbsError = 0.01, .percentile = 0.99, .percentileError = 0.05};
+// Display-encoded radiance and irradiance, weights and counts. Lavapipe reproduces them to the
+// half-float rounding of the stored golden (mean 1e-4 at most); scaling the indirect light by
+// 1.04 moves the frame by 0.0025 on average, so half the unit-range mean catches about a 2%
+// change. The percentile is the unit range's: a cone-traced ray whose march ends one step
+// earlier on another driver relights a texel, and 1% of texels may differ by anything.
+constexpr GoldenTolerance kLighting{.meanAbsError = 0.001, .percentile = 0.99, .percentileError = 0.02};
+
+GoldenSpec spec(const std::string& scene, const std::string& target, GoldenTolerance tolerance,
+                float previewMin = 0.0f, float previewMax = 1.0f) {
+    return {.name = scene + "_lumen_" + target,
+            .tolerance = tolerance,
+            .previewMin = previewMin,
+            .previewMax = previewMax};
+}
+
+// What the alpha channel of a lighting image holds, and how it is normalised.
+enum class Alpha {
+    Drop,   // nothing worth keeping
+    Flag,   // 0 or 1 (a hit, a surface)
+    Weight, // a weight w >= 0 of expected value about 1: w / (1 + w)
+    Frames, // frames accumulated (saturates at 255): a / 255
+};
+
+// Radiance (times `scale`) through the display transform, and the alpha channel as `alpha` says.
+image::Image lightingView(const image::Image& linear, float scale, Alpha alpha) {
+    image::Image scaled = rgbOnly(linear);
+    for (const char* c : {"R", "G", "B"}) {
+        std::ranges::transform(scaled.channel(c), scaled.channel(c).begin(),
+                               [&](float v) { return v * scale; });
+    }
+    image::Image out = image::toDisplay(scaled);
+    if (alpha != Alpha::Drop) {
+        const std::span<const float> a = linear.channel("A");
+        const std::span<float> to = out.addChannel("A");
+        for (size_t i = 0; i < a.size(); ++i) {
+            const float v = a[i];
+            to[i] = alpha == Alpha::Weight ? v / (1.0f + v) : alpha == Alpha::Frames ? v / 255.0f : v;
+        }
+    }
+    return out;
+}
+
+// Irradiance E as the radiance E / pi it gives a white Lambertian surface.
+image::Image irradianceView(const image::Image& linear, Alpha alpha) {
+    return lightingView(linear, std::numbers::inv_pi_v<float>, alpha);
+}
+
+// Non-finite values in any channel (the display transform would hide them).
+uint64_t nonFiniteValues(const image::Image& image) {
+    uint64_t count = 0;
+    for (const std::string& name : image.channelNames()) {
+        count += std::ranges::count_if(image.channel(name), [](float v) { return !std::isfinite(v); });
+    }
+    return count;
+}
+
+// Zeroes the tiles of invalid probes in a per-probe image (one tile per probe, probe (x, y) at
+// tile (x, y)).
+image::Image zeroInvalidProbes(image::Image image, const std::vector<gpu::ScreenProbe>& probes,
+                               uint32_t gridWidth, uint32_t gridHeight) {
+    const uint32_t tileWidth = image.width() / gridWidth, tileHeight = image.height() / gridHeight;
+    for (uint32_t p = 0; p < probes.size(); ++p) {
+        if (probes[p].info.x == LUMINA_SP_PROBE_VALID) {
+            continue;
+        }
+        for (const std::string& name : image.channelNames()) {
+            for (uint32_t y = 0; y < tileHeight; ++y) {
+                for (uint32_t x = 0; x < tileWidth; ++x) {
+                    image.set(name, (p % gridWidth) * tileWidth + x, (p / gridWidth) * tileHeight + y, 0.0f);
+                }
+            }
+        }
+    }
+    return image;
+}
+
+// Probe positions into the scene's bounds ([0, 1] along its longest side) and view depth by the
+// same scale; normals with the valid flag in A.
+std::pair<image::Image, image::Image> placementImages(const std::vector<gpu::ScreenProbe>& probes,
+                                                      uint32_t gridWidth, uint32_t gridHeight,
+                                                      const scene::Bounds& bounds) {
+    const glm::vec3 size = bounds.size();
+    const float scale = 1.0f / std::max({size.x, size.y, size.z});
+    image::Image position(gridWidth, gridHeight, {"R", "G", "B", "A"});
+    image::Image normal(gridWidth, gridHeight, {"R", "G", "B", "A"});
+    for (uint32_t p = 0; p < probes.size(); ++p) {
+        const uint32_t x = p % gridWidth, y = p / gridWidth;
+        const bool valid = probes[p].info.x == LUMINA_SP_PROBE_VALID;
+        const glm::vec3 at =
+            valid ? (glm::vec3(probes[p].positionAndDepth) - bounds.min) * scale : glm::vec3(0.0f);
+        position.setRgb(x, y, {at.x, at.y, at.z});
+        position.set("A", x, y, valid ? probes[p].positionAndDepth.w * scale : 0.0f);
+        normal.setRgb(x, y, {probes[p].normal.x, probes[p].normal.y, probes[p].normal.z});
+        normal.set("A", x, y, valid ? 1.0f : 0.0f);
+    }
+    return {position, normal};
+}
+
+// A surface-cache layer over the atlas region the cards occupy, one texel (the block's centre)
+// per kAtlasStep x kAtlasStep block.
+image::Image atlasView(const std::vector<glm::vec4>& texels, uint32_t atlasSize,
+                       const std::vector<gpu::SurfaceCard>& cards) {
+    uint32_t right = 0, bottom = 0;
+    for (const gpu::SurfaceCard& card : cards) {
+        right = std::max(right, card.atlasRect.x + card.atlasRect.z);
+        bottom = std::max(bottom, card.atlasRect.y + card.atlasRect.w);
+    }
+    image::Image out(right / kAtlasStep, bottom / kAtlasStep, {"R", "G", "B", "A"});
+    for (uint32_t y = 0; y < out.height(); ++y) {
+        for (uint32_t x = 0; x < out.width(); ++x) {
+            const glm::vec4& v =
+                texels[size_t(y * kAtlasStep + kAtlasStep / 2) * atlasSize + x * kAtlasStep + kAtlasStep / 2];
+            out.setRgb(x, y, {v.r, v.g, v.b});
+            out.set("A", x, y, v.a);
+        }
+    }
+    return out;
+}
+
+class FrameGoldenTest : public GpuTestFixture,
+                        public ::testing::WithParamInterface<std::tuple<rhi::Api, std::string>> {
+protected:
+    void SetUp() override { openDevice(std::get<0>(GetParam())); }
+};
+
+TEST_P(FrameGoldenTest, ScreenProbePassesSurfaceCacheLayersAndFrameMatchTheirGoldens) {
+    LUMINA_REQUIRE_KERNELS();
+    const std::string name = std::get<1>(GetParam());
+    FrameHarness h(device(), shaders(), scene::loadScene(name),
+                   {.width = kSize, .height = kSize, .probeSpacing = kProbeSpacing});
+    h.render(kFrames);
+
+    const gi::ScreenProbeGather& gather = h.lumen().screenProbes();
+    const gi::ScreenProbeResources& r = gather.resources();
+    const uint32_t gw = r.gridWidth, gh = r.gridHeight, current = gather.current();
+    const auto probes = rhi::readBufferAs<gpu::ScreenProbe>(device(), *r.probes[current]);
+    const auto perTexel = [&](const rhi::BufferHandle& buffer) {
+        return zeroInvalidProbes(gi::probeMapImage(rhi::readBufferAs<gpu::float4>(device(), *buffer), gw, gh),
+                                 probes, gw, gh);
+    };
+    const image::Image rays = zeroInvalidProbes(
+        gi::probeRayImage(rhi::readBufferAs<gpu::float4>(device(), *r.rayRadiance), r.raysPerProbe, gw, gh),
+        probes, gw, gh);
+    const image::Image composite = perTexel(r.frameRadiance);
+    const image::Image history = perTexel(r.history[current]);
+    const image::Image filtered = perTexel(r.filtered);
+    const image::Image atlas = zeroInvalidProbes(h.read(r.irradiance), probes, gw, gh);
+    const image::Image screenGather = h.read(r.gather);
+    const image::Image screenResult = h.read(r.screenIrradiance[current]);
+    const image::Image hdr = h.hdr();
+    for (const auto& [what, image] : {std::pair{"ray radiance", &rays},
+                                      {"composite", &composite},
+                                      {"history", &history},
+                                      {"filtered", &filtered},
+                                      {"irradiance atlas", &atlas},
+                                      {"gather", &screenGather},
+                                      {"screen temporal", &screenResult},
+                                      {"frame", &hdr}}) {
+        EXPECT_EQ(nonFiniteValues(*image), 0u) << name << ": " << what;
+    }
+
+    const auto [position, normal] = placementImages(probes, gw, gh, h.scene().worldBounds());
+    GoldenChecks checks = {
+        {spec(name, "probe_position", kUnitRange, 0.0f, 1.5f), position},
+        {spec(name, "probe_normal", kNormals, -1.0f, 1.0f), normal},
+        {spec(name, "ray_radiance", kLighting), lightingView(rays, 1.0f, Alpha::Flag)},
+        {spec(name, "probe_composite", kLighting), lightingView(composite, 1.0f, Alpha::Weight)},
+        {spec(name, "probe_history", kLighting), lightingView(history, 1.0f, Alpha::Weight)},
+        {spec(name, "probe_filtered", kLighting), lightingView(filtered, 1.0f, Alpha::Weight)},
+        {spec(name, "irradiance_atlas", kLighting), irradianceView(atlas, Alpha::Drop)},
+        {spec(name, "gather", kLighting), irradianceView(screenGather, Alpha::Drop)},
+        {spec(name, "screen_temporal", kLighting), irradianceView(screenResult, Alpha::Frames)},
+        {spec(name, "frame", kLighting), lightingView(hdr, 1.0f, Alpha::Drop)},
+    };
+
+    const surface_cache::SurfaceCache& cache = h.lumen().surfaceCache();
+    const auto layer = [&](surface_cache::AtlasLayer which) {
+        return atlasView(cache.readLayer(which), cache.atlas().size(), cache.cards().cards());
+    };
+    using surface_cache::AtlasLayer;
+    const image::Image direct = layer(AtlasLayer::DirectLight);
+    const image::Image indirect = layer(AtlasLayer::IndirectLight);
+    const image::Image final = layer(AtlasLayer::FinalLighting);
+    for (const auto& [what, image] :
+         {std::pair{"direct light", &direct}, {"indirect light", &indirect}, {"final lighting", &final}}) {
+        EXPECT_EQ(nonFiniteValues(*image), 0u) << name << ": surface cache " << what;
+    }
+    checks.emplace_back(spec(name, "cache_albedo", kUnitRange), layer(AtlasLayer::Albedo));
+    checks.emplace_back(spec(name, "cache_normal", kNormals, -1.0f, 1.0f), layer(AtlasLayer::Normal));
+    checks.emplace_back(spec(name, "cache_material", kMaterial, 0.0f, 4.0f), layer(AtlasLayer::Material));
+    checks.emplace_back(spec(name, "cache_direct", kLighting), irradianceView(direct, Alpha::Drop));
+    checks.emplace_back(spec(name, "cache_indirect", kLighting), irradianceView(indirect, Alpha::Drop));
+    checks.emplace_back(spec(name, "cache_final", kLighting), lightingView(final, 1.0f, Alpha::Drop));
+
+    expectGoldensMatch(checks, device().adapter());
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, FrameGoldenTest,
+                         ::testing::Combine(::testing::ValuesIn(app::compiledApis()),
+                                            ::testing::Values(std::string("cornell_box"),
+                                                              std::string("open_top_box"))),
+                         backendSceneName);
+
+} // namespace
+} // namespace lumina::test

@@ -1,0 +1,119 @@
+#include "tests/frame/frame_harness.h"
+
+#include <algorithm>
+
+namespace lumina::test {
+
+namespace {
+
+gi::FrameRendererSettings rendererSettings(const scene::Scene& scene, const FrameHarnessSettings& settings) {
+    gi::FrameRendererSettings out;
+    out.technique = settings.technique;
+    out.deferred = {.width = settings.width, .height = settings.height, .log = [](std::string_view) {}};
+    if (settings.technique == gi::GiTechnique::Lumen) {
+        out.lumen = testLumenSettings(settings.preset, scene);
+        if (settings.probeSpacing != 0) {
+            out.lumen->probes.probeSpacing = settings.probeSpacing;
+        }
+    }
+    return out;
+}
+
+// Path-tracer samples per submission: short dispatches on lavapipe.
+constexpr uint32_t kSamplesPerSubmission = 32;
+
+} // namespace
+
+gi::LumenSettings testLumenSettings(const std::string& name, const scene::Scene& scene) {
+    gi::LumenSettings settings = gi::lumenPreset(name, scene);
+    settings.sdf.useCache = false;
+    return settings;
+}
+
+FrameHarness::FrameHarness(rhi::IDevice& device, rhi::ShaderLibrary& shaders, scene::Scene scene,
+                           const FrameHarnessSettings& settings)
+    : device_(device), scene_(std::move(scene)), gpuScene_(device, scene_), pipelines_(device, shaders),
+      renderer_(device, scene_, gpuScene_, rendererSettings(scene_, settings)),
+      list_(device.createCommandList()) {}
+
+void FrameHarness::render(uint32_t count) {
+    for (uint32_t i = 0; i < count; ++i) {
+        list_->begin();
+        gi::FrameContext frame(pipelines_, *list_, frames_++);
+        renderer_.render(frame);
+        list_->end();
+        rhi::IQueue& queue = device_.queue(list_->queueType());
+        queue.waitForValue(queue.submit(*list_));
+        timings_.addFrame(list_->timerResults(), frame.skipped());
+    }
+}
+
+bool FrameHarness::converged() const {
+    return renderer_.lumen() == nullptr || renderer_.lumen()->surfaceCache().radiositySchedule().converged();
+}
+
+uint32_t FrameHarness::renderUntilConverged(uint32_t extraFrames, uint32_t maxFrames) {
+    const uint32_t start = frames_;
+    while (!converged() && frames_ - start < maxFrames) {
+        render();
+    }
+    render(std::min(extraFrames, maxFrames - (frames_ - start)));
+    return frames_ - start;
+}
+
+image::Image FrameHarness::hdr() {
+    return rgbOnly(read(renderer_.deferred().hdr()));
+}
+
+image::Image FrameHarness::direct() {
+    return rgbOnly(read(renderer_.deferred().direct()));
+}
+
+image::Image FrameHarness::indirect() {
+    image::Image out = hdr();
+    const image::Image lit = direct();
+    for (const char* c : {"R", "G", "B"}) {
+        const std::span<float> values = out.channel(c);
+        const std::span<const float> subtract = lit.channel(c);
+        for (size_t i = 0; i < values.size(); ++i) {
+            values[i] -= subtract[i];
+        }
+    }
+    return out;
+}
+
+image::Image rgbOnly(const image::Image& image) {
+    image::Image out = image::Image::rgb(image.width(), image.height());
+    for (const char* c : {"R", "G", "B"}) {
+        std::ranges::copy(image.channel(c), out.channel(c).begin());
+    }
+    return out;
+}
+
+image::Image rgbOf(const image::Image& image, const std::string& prefix) {
+    image::Image out = image::Image::rgb(image.width(), image.height());
+    for (const char* c : {"R", "G", "B"}) {
+        std::ranges::copy(image.channel(prefix + "." + c), out.channel(c).begin());
+    }
+    return out;
+}
+
+gi::PathTracerResult pathTracedReference(rhi::IDevice& device, gi::PipelineCache& pipelines,
+                                         const scene::Scene& scene, uint32_t width, uint32_t height,
+                                         uint32_t spp) {
+    gi::PathTracerScene traced(device, scene);
+    gi::PathTracer tracer(device, traced, scene,
+                          {.width = width, .height = height, .jitter = false, .aovs = true});
+    rhi::CommandListHandle list = device.createCommandList();
+    for (uint32_t done = 0; done < spp; done += kSamplesPerSubmission) {
+        list->begin();
+        gi::FrameContext frame(pipelines, *list, done);
+        tracer.recordSamples(frame, std::min(kSamplesPerSubmission, spp - done));
+        list->end();
+        rhi::IQueue& queue = device.queue(list->queueType());
+        queue.waitForValue(queue.submit(*list));
+    }
+    return tracer.readResult();
+}
+
+} // namespace lumina::test

@@ -1,0 +1,86 @@
+#pragma once
+// A FrameRenderer on a test device (docs/gi_tests.md): owns the scene, its upload, the
+// pipelines and a command list, renders one frame per submission (waited for) and reads the
+// images back; and the path-traced reference the frame is measured against.
+//
+//   FrameHarness h(device(), shaders(), scene::loadScene("cornell_box"), {.width = 64, .height = 64});
+//   h.renderUntilConverged(48);       // the surface cache's radiosity, then 48 frames more
+//   measure::relMse(reference, h.hdr());
+#include "gi/core/frame_context.h"
+#include "gi/core/pipeline_cache.h"
+#include "gi/core/timing_table.h"
+#include "gi/deferred/buffer_readback.h"
+#include "gi/frame/frame_renderer.h"
+#include "gi/gpu_scene/gpu_scene.h"
+#include "gi/image/image.h"
+#include "gi/pathtracer/path_tracer.h"
+#include "gi/scene/scene.h"
+
+#include <cstdint>
+#include <string>
+
+namespace lumina::test {
+
+struct FrameHarnessSettings {
+    uint32_t width = 64;
+    uint32_t height = 64;
+    gi::GiTechnique technique = gi::GiTechnique::Lumen;
+    std::string preset = "low";
+    uint32_t probeSpacing = 0; // pixels per screen-probe edge; 0: the preset's
+};
+
+class FrameHarness {
+public:
+    FrameHarness(rhi::IDevice& device, rhi::ShaderLibrary& shaders, scene::Scene scene,
+                 const FrameHarnessSettings& settings);
+
+    // Renders `count` frames, each submitted and waited for.
+    void render(uint32_t count = 1);
+    // Renders until the surface cache's radiosity has converged, then `extraFrames` more (the
+    // screen probes' temporal filters settle); at most `maxFrames` in all. Returns the frames
+    // rendered; converged() says whether the cache got there.
+    uint32_t renderUntilConverged(uint32_t extraFrames, uint32_t maxFrames = 2000);
+    bool converged() const;
+
+    // R, G, B of the last frame: the final HDR radiance, the deferred direct light (emission,
+    // lights, sky on the background: what the direct technique shows), and what GI added
+    // (final less direct).
+    image::Image hdr();
+    image::Image direct();
+    image::Image indirect();
+    image::Image read(const rhi::TextureHandle& texture) { return gi::readTextureImage(device_, *texture); }
+
+    gi::FrameRenderer& renderer() { return renderer_; }
+    const gi::LumenGi& lumen() const { return *renderer_.lumen(); } // the lumen technique only
+    const scene::Scene& scene() const { return scene_; }
+    gi::PipelineCache& pipelines() { return pipelines_; }
+    uint32_t frames() const { return frames_; }
+    const gi::TimingTable& timings() const { return timings_; }
+
+private:
+    rhi::IDevice& device_;
+    scene::Scene scene_;
+    gi::GpuScene gpuScene_;
+    gi::PipelineCache pipelines_;
+    gi::FrameRenderer renderer_;
+    rhi::CommandListHandle list_;
+    gi::TimingTable timings_;
+    uint32_t frames_ = 0;
+};
+
+// The lumen preset `name` for `scene` as the tests run it: the mesh SDFs built here, not read
+// from the user's cache.
+gi::LumenSettings testLumenSettings(const std::string& name, const scene::Scene& scene);
+
+// R, G, B of an image (drops A and any other channel).
+image::Image rgbOnly(const image::Image& image);
+// R, G, B of `prefix`.R/G/B ("direct", "indirect": the path tracer's AOVs).
+image::Image rgbOf(const image::Image& image, const std::string& prefix);
+
+// The path tracer's image of `scene` at pixel centres (jitter off, as the raster samples them),
+// with AOVs, after `spp` samples per pixel.
+gi::PathTracerResult pathTracedReference(rhi::IDevice& device, gi::PipelineCache& pipelines,
+                                         const scene::Scene& scene, uint32_t width, uint32_t height,
+                                         uint32_t spp);
+
+} // namespace lumina::test
