@@ -2,6 +2,7 @@
 // Quality settings of the screen-probe final gather, in one struct (docs/screen_probes.md).
 // validate() throws std::invalid_argument naming the first bad value.
 #include <cstdint>
+#include <optional>
 
 namespace lumina::gi {
 
@@ -15,6 +16,15 @@ struct ScreenProbeSettings {
     float maxTraceDistance = 0.0f; // world units; 0: the global SDF grid's diagonal
     float coneHalfAngle = 0.1f;    // radians (the thesis's far-field cone)
     float originBiasVoxels = 2.0f; // rays start this many global SDF voxels off the surface, along its normal
+    // Rays are traced through the mesh SDFs (reading the surface cache at hits) up to this distance
+    // and through the global SDF beyond. World units; 0: no near field; unset:
+    // kNearFieldGridFraction x the global SDF grid's diagonal. Capped at the trace distance; needs a
+    // surface cache among the inputs.
+    std::optional<float> nearFieldDistance;
+    // A tenth of the diagonal: about 11 global SDF voxels at the default 64 along the longest axis of a
+    // cube, where the cone's radius (t x tan 0.1) is still about one voxel, so the far field cannot
+    // resolve what lies nearer (docs/screen_probes.md).
+    static constexpr float kNearFieldGridFraction = 0.1f;
 
     float probeHistoryBlend = 0.1f;      // weight of the new frame in the probe radiance history
     float outlierClamp = 2.0f;           // new radiance clamped to this x the probe's history luminance
