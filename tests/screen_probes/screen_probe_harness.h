@@ -1,7 +1,8 @@
 #pragma once
 // A scene on a test device with everything the screen probes read: the deferred renderer (for
-// the GBuffer), the scene's SDFs, a voxel lighting volume the test fills, and the gather. Each
-// render() records one frame (SDF compose, deferred frame, screen probes), submits it and waits.
+// the GBuffer), the scene's SDFs, a voxel lighting volume the test fills, optionally a surface
+// cache, and the gather. Each render() records one frame (SDF compose, deferred frame, surface
+// cache update, screen probes), submits it and waits.
 #include "gi/core/frame_context.h"
 #include "gi/core/pipeline_cache.h"
 #include "gi/deferred/buffer_readback.h"
@@ -12,9 +13,11 @@
 #include "gi/screen_probes/screen_probe_gather.h"
 #include "gi/sdf/scene_sdf.h"
 #include "gi/sdf/sdf_atlas.h"
+#include "gi/surface_cache/surface_cache.h"
 #include "rhi/rhi.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -85,6 +88,14 @@ public:
         renderer_.setCamera(camera);
     }
     void useVoxelLighting(bool use) { useVoxels_ = use; }
+    // Builds a surface cache of the scene: every render() updates it (lit by the deferred
+    // renderer's lights) before the probes run, and hands it to them while `give`.
+    void addSurfaceCache(const surface_cache::SurfaceCacheSettings& settings,
+                         const surface_cache::SurfaceLightingSettings& lighting = {}) {
+        cache_ = std::make_unique<surface_cache::SurfaceCache>(device_, scene_, gpuScene_, sdf_, settings,
+                                                               lighting);
+    }
+    void giveSurfaceCache(bool give) { giveCache_ = give; }
 
     // Records and runs one frame; returns the names of the timed passes that ran, in order.
     std::vector<std::string> render() {
@@ -92,11 +103,19 @@ public:
         gi::FrameContext frame(pipelines_, *list_, frameIndex_++);
         sdf_.record(frame);
         renderer_.render(frame);
+        std::optional<gi::SurfaceCacheView> cache;
+        if (cache_) {
+            cache_->update(frame, renderer_.shadowedLights());
+            if (giveCache_) {
+                cache = gi::surfaceCacheView(*cache_);
+            }
+        }
         probes_.record(frame, {.gbuffer = renderer_.gbuffer(),
                                .camera = camera_,
                                .sdf = sdf_,
                                .sky = sky_,
-                               .voxelLighting = {useVoxels_ ? voxels_ : nullptr, voxelMin_, voxelMax_}});
+                               .voxelLighting = {useVoxels_ ? voxels_ : nullptr, voxelMin_, voxelMax_},
+                               .surfaceCache = cache});
         list_->end();
         skipped_ = frame.skipped();
         rhi::IQueue& queue = device_.queue(rhi::QueueType::Graphics);
@@ -125,6 +144,8 @@ public:
     gi::ScreenProbeGather& probes() { return probes_; }
     gi::DeferredRenderer& renderer() { return renderer_; }
     const scene::Scene& scene() const { return scene_; }
+    const sdf::SceneSdf& sdf() const { return sdf_; }
+    const surface_cache::SurfaceCache& cache() const { return *cache_; }
 
 private:
     rhi::IDevice& device_;
@@ -142,6 +163,8 @@ private:
     glm::vec3 voxelMin_{0.0f}, voxelMax_{0.0f};
     glm::vec3 sky_{0.0f};
     bool useVoxels_ = true;
+    std::unique_ptr<surface_cache::SurfaceCache> cache_;
+    bool giveCache_ = true;
     std::vector<rhi::TimerResult> timings_;
     std::vector<gi::SkippedPass> skipped_;
 };
