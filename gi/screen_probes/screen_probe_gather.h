@@ -41,7 +41,8 @@
 namespace lumina::gi {
 
 // Radiance at far-field hits: an RGBA16F 3D texture over a world box, rgb the radiance leaving
-// the surfaces in a voxel premultiplied by a, its occupancy (0: empty). The surface cache fills it.
+// the surfaces in a voxel premultiplied by a, its occupancy (0: empty). A surface cache passed as
+// ScreenProbeInputs::surfaceCache stands in for it (with its own grid and lookup) when none is given.
 struct VoxelLighting {
     rhi::TextureHandle texture; // null: none (hits are black)
     glm::vec3 boxMin{0.0f};
