@@ -11,18 +11,16 @@ LumenGi::LumenGi(rhi::IDevice& device, const scene::Scene& scene, const GpuScene
 void LumenGi::record(FrameContext& frame, const DeferredRenderer& deferred, const scene::Camera& camera) {
     sdf_.record(frame);
     cache_.update(frame, deferred.shadowedLights());
-    const gpu::VoxelGridInfo& grid = cache_.voxelLighting().grid();
-    const glm::vec3 boxMin(grid.minAndVoxelSize.x, grid.minAndVoxelSize.y, grid.minAndVoxelSize.z);
-    const glm::vec3 boxMax =
-        boxMin + grid.minAndVoxelSize.w * glm::vec3(grid.dims.x, grid.dims.y, grid.dims.z);
-    probes_.record(frame, {.gbuffer = deferred.gbuffer(),
-                           .camera = camera,
-                           .sdf = sdf_,
-                           .sky = sky_,
-                           .voxelLighting = {.texture = cache_.voxelLighting().volume(),
-                                             .boxMin = boxMin,
-                                             .boxMax = boxMax,
-                                             .faces = LUMINA_VOXEL_FACES}});
+    // Near-field hits read their cards' final lighting, far-field hits the cache's voxel lighting
+    // (no volume of its own).
+    const VoxelLighting cacheVoxels{};
+    const ScreenProbeInputs inputs{.gbuffer = deferred.gbuffer(),
+                                   .camera = camera,
+                                   .sdf = sdf_,
+                                   .sky = sky_,
+                                   .voxelLighting = cacheVoxels,
+                                   .surfaceCache = surfaceCacheView(cache_)};
+    probes_.record(frame, inputs);
 }
 
 } // namespace lumina::gi

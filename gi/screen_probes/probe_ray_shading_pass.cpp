@@ -11,6 +11,7 @@ void ProbeRayShadingPass::record(FrameContext& frame, const ScreenProbeView& vie
         .read(0, r.probes[view.current])
         .read(1, r.hits)
         .read(2, view.voxelLighting)
+        .read(3, r.nearField)
         .sampler(0, r.linearClamp)
         .write(0, r.rayRadiance)
         .dispatch(view.groupsX(), view.groupsY());

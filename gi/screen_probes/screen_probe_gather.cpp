@@ -21,11 +21,6 @@ void checkVoxelLighting(const VoxelLighting& voxels) {
         throw std::invalid_argument("screen probes: voxel lighting '" + desc.debugName +
                                     "' must be an RGBA16F 3D texture");
     }
-    if (voxels.faces == 0 || desc.width % voxels.faces != 0) {
-        throw std::invalid_argument("screen probes: voxel lighting '" + desc.debugName + "' is " +
-                                    std::to_string(desc.width) + " wide, not a whole number of " +
-                                    std::to_string(voxels.faces) + " face columns");
-    }
     const glm::vec3 extent = voxels.boxMax - voxels.boxMin;
     if (!(extent.x > 0.0f && extent.y > 0.0f && extent.z > 0.0f)) {
         throw std::invalid_argument("screen probes: voxel lighting box has extent (" +
@@ -44,35 +39,58 @@ uint32_t ScreenProbeGather::brdfRays() const {
     return uint32_t(std::lround(float(resources_.raysPerProbe) * settings_.brdfRayFraction));
 }
 
-void ScreenProbeGather::uploadConstants(rhi::ICommandList& commands, const ScreenProbeInputs& inputs,
-                                        const gpu::GpuCamera& camera) {
-    const ScreenProbeResources& r = resources_;
+ScreenProbeGather::TraceRange ScreenProbeGather::traceRange(const ScreenProbeInputs& inputs) const {
     const gpu::SdfSceneInfo sdf = inputs.sdf.sceneInfo();
-    const float voxel = sdf.globalMinAndVoxelSize.w;
-    const glm::vec3 gridExtent =
-        glm::vec3(sdf.globalMaxAndMaxDistance) - glm::vec3(sdf.globalMinAndVoxelSize);
-    const float maxDistance =
-        settings_.maxTraceDistance > 0.0f ? settings_.maxTraceDistance : glm::length(gridExtent);
+    const float diagonal =
+        glm::length(glm::vec3(sdf.globalMaxAndMaxDistance) - glm::vec3(sdf.globalMinAndVoxelSize));
+    TraceRange range;
+    range.maxDistance = settings_.maxTraceDistance > 0.0f ? settings_.maxTraceDistance : diagonal;
+    if (inputs.surfaceCache) {
+        const float near =
+            settings_.nearFieldDistance.value_or(ScreenProbeSettings::kNearFieldGridFraction * diagonal);
+        range.nearField = std::min(near, range.maxDistance);
+    }
+    return range;
+}
+
+void ScreenProbeGather::uploadConstants(rhi::ICommandList& commands, const ScreenProbeInputs& inputs,
+                                        const gpu::GpuCamera& camera, const TraceRange& range) {
+    const ScreenProbeResources& r = resources_;
+    const float voxel = inputs.sdf.sceneInfo().globalMinAndVoxelSize.w;
     const uint32_t brdfRays = this->brdfRays();
+    // Far hits read the caller's volume, else the surface cache's (with its own lookup).
+    const bool cacheVoxels = !inputs.voxelLighting.texture && inputs.surfaceCache;
+    glm::vec3 voxelMin = inputs.voxelLighting.boxMin, voxelMax = inputs.voxelLighting.boxMax;
 
     uint32_t flags = 0;
     if (previousCamera_) {
         flags |= LUMINA_SP_FLAG_PROBE_HISTORY | LUMINA_SP_FLAG_SCREEN_HISTORY;
     }
-    if (inputs.voxelLighting.texture) {
+    if (inputs.voxelLighting.texture || cacheVoxels) {
         flags |= LUMINA_SP_FLAG_VOXEL_LIGHTING;
     }
+    if (range.nearField > 0.0f) {
+        flags |= LUMINA_SP_FLAG_NEAR_FIELD;
+    }
     gpu::ScreenProbeConstants c{};
+    if (inputs.surfaceCache) {
+        c.voxelGrid = inputs.surfaceCache->voxelGrid;
+    }
+    if (cacheVoxels) {
+        flags |= LUMINA_SP_FLAG_VOXEL_GRID;
+        voxelMin = glm::vec3(c.voxelGrid.minAndVoxelSize);
+        voxelMax = voxelMin + glm::vec3(c.voxelGrid.dims) * c.voxelGrid.minAndVoxelSize.w;
+    }
     c.camera = camera;
     c.previousCamera = previousCamera_ ? *previousCamera_ : camera;
     c.grid = gpu::uint4(r.gridWidth, r.gridHeight, settings_.probeSpacing, r.probeCount);
     c.screen = gpu::uint4(r.width, r.height, uint32_t(frames_), flags);
     c.rays = gpu::uint4(r.raysPerProbe, brdfRays, r.raysPerProbe - brdfRays, 0u);
     c.sky = gpu::float4(inputs.sky, 0.0f);
-    c.voxelMin = gpu::float4(inputs.voxelLighting.boxMin, float(inputs.voxelLighting.faces));
-    c.voxelMax = gpu::float4(inputs.voxelLighting.boxMax, 0.0f);
-    c.trace =
-        gpu::float4(maxDistance, std::tan(settings_.coneHalfAngle), settings_.originBiasVoxels * voxel, 0.0f);
+    c.voxelMin = gpu::float4(voxelMin, 0.0f);
+    c.voxelMax = gpu::float4(voxelMax, 0.0f);
+    c.trace = gpu::float4(range.maxDistance, std::tan(settings_.coneHalfAngle),
+                          settings_.originBiasVoxels * voxel, range.nearField);
     c.temporal = gpu::float4(settings_.probeHistoryBlend, settings_.outlierClamp,
                              settings_.screenHistoryBlend, settings_.lightingPdfFloor);
     c.filter = gpu::float4(settings_.filterPlaneScale, settings_.filterNormalPower,
@@ -89,6 +107,9 @@ void ScreenProbeGather::record(FrameContext& frame, const ScreenProbeInputs& inp
                                     std::to_string(resources_.height));
     }
     checkVoxelLighting(inputs.voxelLighting);
+    if (inputs.surfaceCache) {
+        checkSurfaceCacheView(*inputs.surfaceCache);
+    }
     if (!voxelFallbackCleared_) {
         const uint16_t zeros[4] = {0, 0, 0, 0}; // RGBA16F zeros
         frame.commands().writeTexture(*resources_.noVoxelLighting, {}, zeros);
@@ -96,13 +117,20 @@ void ScreenProbeGather::record(FrameContext& frame, const ScreenProbeInputs& inp
     }
     current_ ^= 1u;
     const gpu::GpuCamera camera = makeGpuCamera(inputs.camera, resources_.width, resources_.height);
-    uploadConstants(frame.commands(), inputs, camera);
+    const TraceRange range = traceRange(inputs);
+    uploadConstants(frame.commands(), inputs, camera, range);
 
+    rhi::TextureHandle voxels = resources_.noVoxelLighting;
+    if (inputs.voxelLighting.texture) {
+        voxels = inputs.voxelLighting.texture;
+    } else if (inputs.surfaceCache) {
+        voxels = inputs.surfaceCache->voxelLighting;
+    }
     const ScreenProbeView view{.resources = resources_,
                                .gbuffer = inputs.gbuffer,
                                .sdf = inputs.sdf,
-                               .voxelLighting = inputs.voxelLighting.texture ? inputs.voxelLighting.texture
-                                                                             : resources_.noVoxelLighting,
+                               .voxelLighting = voxels,
+                               .surfaceCache = inputs.surfaceCache ? &*inputs.surfaceCache : nullptr,
                                .current = current_};
     placement_.record(frame, view);
     // A strategy that draws no rays needs no table (spMisWeight leaves it out).
@@ -119,6 +147,13 @@ void ScreenProbeGather::record(FrameContext& frame, const ScreenProbeInputs& inp
                    "no lighting rays: all " + std::to_string(resources_.raysPerProbe) + " from the BRDF PDF");
     }
     rayGeneration_.record(frame, view);
+    nearFieldTraced_ = range.nearField > 0.0f;
+    if (nearFieldTraced_) {
+        traceNearField_.record(frame, view);
+    } else {
+        frame.skip(ProbeTraceNearFieldPass::kName,
+                   inputs.surfaceCache ? "nearFieldDistance is 0" : "no surface cache given");
+    }
     traceFarField_.record(frame, view);
     rayShading_.record(frame, view);
     composite_.record(frame, view);

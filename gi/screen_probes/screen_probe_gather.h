@@ -2,17 +2,18 @@
 // The screen-probe final gather (docs/screen_probes.md): the view-dependent half of the GI.
 // Records, every frame, one named and timed pass each:
 //
-//   placement -> brdf pdf -> lighting pdf -> mis directions -> trace far field -> shade rays
-//   -> composite -> temporal -> spatial filter -> sh irradiance -> final gather -> screen temporal
+//   placement -> brdf pdf -> lighting pdf -> mis directions -> trace near field -> trace far field
+//   -> shade rays -> composite -> temporal -> spatial filter -> sh irradiance -> final gather
+//   -> screen temporal
 //
 //   ScreenProbeGather probes(device, width, height, settings);
 //   probes.record(frame, {.gbuffer = renderer.gbuffer(), .camera = camera, .sdf = sdfs,
-//                         .sky = scene.sky, .voxelLighting = {volume, boxMin, boxMax}});
+//                         .sky = scene.sky, .surfaceCache = gi::surfaceCacheView(cache)});
 //   probes.irradiance();   // RGBA16F: rgb irradiance per pixel (0 on sky)
 //
 // The GBuffer must hold the frame `camera` describes. The SceneSdf must have recorded its
-// global SDF before (SceneSdf::record). History follows the camera by reprojection; call
-// resetHistory() on a cut.
+// global SDF before (SceneSdf::record), the surface cache its update. History follows the camera
+// by reprojection; call resetHistory() on a cut.
 #include "gi/core/frame_context.h"
 #include "gi/deferred/gbuffer_pass.h"
 #include "gi/scene/scene.h"
@@ -25,10 +26,12 @@
 #include "gi/screen_probes/probe_spatial_filter_pass.h"
 #include "gi/screen_probes/probe_temporal_pass.h"
 #include "gi/screen_probes/probe_trace_far_field_pass.h"
+#include "gi/screen_probes/probe_trace_near_field_pass.h"
 #include "gi/screen_probes/screen_gather_pass.h"
 #include "gi/screen_probes/screen_probe_placement_pass.h"
 #include "gi/screen_probes/screen_probe_resources.h"
 #include "gi/screen_probes/screen_temporal_pass.h"
+#include "gi/screen_probes/surface_cache_view.h"
 #include "gi/sdf/scene_sdf.h"
 #include "shaders/common/camera_shared.h"
 
@@ -38,14 +41,12 @@
 namespace lumina::gi {
 
 // Radiance at far-field hits: an RGBA16F 3D texture over a world box, rgb the radiance leaving
-// the surfaces in a voxel premultiplied by a, its occupancy (0: empty). The surface cache fills it.
+// the surfaces in a voxel premultiplied by a, its occupancy (0: empty). A surface cache passed as
+// ScreenProbeInputs::surfaceCache stands in for it (with its own grid and lookup) when none is given.
 struct VoxelLighting {
     rhi::TextureHandle texture; // null: none (hits are black)
     glm::vec3 boxMin{0.0f};
     glm::vec3 boxMax{0.0f};
-    // 1: one radiance per voxel; LUMINA_VOXEL_FACES (the surface cache's): the texture holds that
-    // many face columns side by side along x, read by the hit normal (surface_cache_lighting_shared.h).
-    uint32_t faces = 1;
 };
 
 struct ScreenProbeInputs {
@@ -53,7 +54,12 @@ struct ScreenProbeInputs {
     const scene::Camera& camera;
     const sdf::SceneSdf& sdf;
     glm::vec3 sky{0.0f}; // uniform radiance of rays that leave the scene
+    // Far-field hits read this volume; without one they read the surface cache's voxel lighting
+    // (when given), else they are black.
     VoxelLighting voxelLighting;
+    // The near field reads it (settings.nearFieldDistance); none: no near field, the far field
+    // traces every ray from the probe.
+    std::optional<SurfaceCacheView> surfaceCache = std::nullopt;
 };
 
 class ScreenProbeGather {
@@ -73,24 +79,34 @@ public:
     // The ping-pong half this frame wrote (probes, history, screen irradiance and positions).
     uint32_t current() const { return current_; }
     uint64_t framesRecorded() const { return frames_; }
+    // Whether the last frame traced the near field (resources().nearField holds its result).
+    bool nearFieldTraced() const { return nearFieldTraced_; }
     // Rays per probe drawn from the BRDF table; the rest come from the lighting table.
     uint32_t brdfRays() const;
 
 private:
+    // How far rays go: the whole trace, and the near field's part of it (0: no near field).
+    struct TraceRange {
+        float maxDistance = 0.0f;
+        float nearField = 0.0f;
+    };
+    TraceRange traceRange(const ScreenProbeInputs& inputs) const;
     void uploadConstants(rhi::ICommandList& commands, const ScreenProbeInputs& inputs,
-                         const gpu::GpuCamera& camera);
+                         const gpu::GpuCamera& camera, const TraceRange& range);
 
     ScreenProbeSettings settings_;
     ScreenProbeResources resources_;
     uint32_t current_ = 1; // flips before each frame: the first frame writes half 0
     uint64_t frames_ = 0;
     bool voxelFallbackCleared_ = false;
+    bool nearFieldTraced_ = false;
     std::optional<gpu::GpuCamera> previousCamera_;
 
     ScreenProbePlacementPass placement_;
     ProbeBrdfPdfPass brdfPdf_;
     ProbeLightingPdfPass lightingPdf_;
     ProbeRayGenerationPass rayGeneration_;
+    ProbeTraceNearFieldPass traceNearField_;
     ProbeTraceFarFieldPass traceFarField_;
     ProbeRayShadingPass rayShading_;
     ProbeCompositePass composite_;

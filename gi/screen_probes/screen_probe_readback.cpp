@@ -92,6 +92,9 @@ std::vector<std::filesystem::path> dumpScreenProbeBuffers(rhi::IDevice& device,
     }
     exr("ray_directions", probeRayImage(directions, r.raysPerProbe, gw, gh));
     exr("ray_hits", probeRayImage(records, r.raysPerProbe, gw, gh));
+    if (gather.nearFieldTraced()) {
+        exr("near_field", probeRayImage(float4s(r.nearField), r.raysPerProbe, gw, gh));
+    }
     exr("ray_radiance", probeRayImage(float4s(r.rayRadiance), r.raysPerProbe, gw, gh));
     exr("frame_radiance", probeMapImage(float4s(r.frameRadiance), gw, gh));
     exr("history", probeMapImage(float4s(r.history[current]), gw, gh));

@@ -23,8 +23,9 @@ image::Image probeRayImage(std::span<const gpu::float4> rays, uint32_t raysPerPr
 
 // Writes every intermediate of the last frame recorded into `directory` (created if needed) as
 // EXR: probes (position + view depth, normal + valid), both PDFs, ray directions + weights, hits
-// (t, miss, steps, occlusion), ray radiance, the composite, history, filtered radiance, SH, the
-// irradiance atlas, the gather and the screen result. Returns the paths written.
+// (t, miss, steps, occlusion), the near field's radiance and source (when it ran), ray radiance,
+// the composite, history, filtered radiance, SH, the irradiance atlas, the gather and the screen
+// result. Returns the paths written.
 std::vector<std::filesystem::path> dumpScreenProbeBuffers(rhi::IDevice& device,
                                                           const ScreenProbeGather& gather,
                                                           const std::filesystem::path& directory);

@@ -61,6 +61,7 @@ ScreenProbeResources ScreenProbeResources::create(rhi::IDevice& device, uint32_t
     r.lightingPdf = structured(device, texels, sizeof(float), "lighting pdf");
     r.rays = structured(device, rays, sizeof(gpu::ProbeRay), "rays");
     r.hits = structured(device, rays, sizeof(gpu::SdfHit), "hits");
+    r.nearField = structured(device, rays, sizeof(gpu::float4), "near field");
     r.rayRadiance = structured(device, rays, sizeof(gpu::float4), "ray radiance");
     r.frameRadiance = structured(device, texels, sizeof(gpu::float4), "frame radiance");
     r.filtered = structured(device, texels, sizeof(gpu::float4), "filtered radiance");

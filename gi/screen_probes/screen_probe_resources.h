@@ -23,6 +23,8 @@ struct ScreenProbeResources {
     rhi::BufferHandle lightingPdf;            // float[probeCount x 64]
     rhi::BufferHandle rays;                   // ProbeRay[probeCount x raysPerProbe]
     rhi::BufferHandle hits;                   // SdfHit[probeCount x raysPerProbe]
+    rhi::BufferHandle nearField;              // float4[probeCount x raysPerProbe]: near-field radiance, a:
+                                              // LUMINA_SP_NEAR_* (written only when the near field runs)
     rhi::BufferHandle rayRadiance;            // float4[probeCount x raysPerProbe]
     rhi::BufferHandle frameRadiance;          // float4[probeCount x 64]: this frame's composite
     std::array<rhi::BufferHandle, 2> history; // float4[probeCount x 64]: accumulated radiance

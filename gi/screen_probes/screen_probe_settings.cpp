@@ -38,6 +38,10 @@ void ScreenProbeSettings::validate() const {
     checkRange("lightingPdfFloor", lightingPdfFloor, 0.0f, 1.0f, true, "0 < floor <= 1");
     checkRange("maxTraceDistance", maxTraceDistance, 0.0f, 1e30f, false,
                ">= 0 (0: the global SDF's diagonal)");
+    if (nearFieldDistance) {
+        checkRange("nearFieldDistance", *nearFieldDistance, 0.0f, 1e30f, false,
+                   ">= 0 (0: no near field; unset: a fraction of the global SDF's diagonal)");
+    }
     checkRange("coneHalfAngle", coneHalfAngle, 0.0f, 1.0f, false, "0 .. 1 radian");
     checkRange("originBiasVoxels", originBiasVoxels, 0.0f, 16.0f, false, "0 .. 16 voxels");
     checkRange("probeHistoryBlend", probeHistoryBlend, 0.0f, 1.0f, true, "0 < blend <= 1");

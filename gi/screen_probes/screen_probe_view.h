@@ -1,8 +1,9 @@
 #pragma once
 // What the passes of one frame see: the resources, which half of each ping-pong pair is this
-// frame's, and the inputs from outside (GBuffer, scene SDFs, voxel lighting).
+// frame's, and the inputs from outside (GBuffer, scene SDFs, voxel lighting, surface cache).
 #include "gi/deferred/gbuffer_pass.h"
 #include "gi/screen_probes/screen_probe_resources.h"
+#include "gi/screen_probes/surface_cache_view.h"
 #include "gi/sdf/scene_sdf.h"
 
 #include <cstdint>
@@ -13,8 +14,9 @@ struct ScreenProbeView {
     const ScreenProbeResources& resources;
     const GBuffer& gbuffer;
     const sdf::SceneSdf& sdf;
-    rhi::TextureHandle voxelLighting; // never null (ScreenProbeResources::noVoxelLighting)
-    uint32_t current = 0;             // index into the ping-pong pairs
+    rhi::TextureHandle voxelLighting;               // never null (ScreenProbeResources::noVoxelLighting)
+    const SurfaceCacheView* surfaceCache = nullptr; // null: none given (no near field)
+    uint32_t current = 0;                           // index into the ping-pong pairs
 
     uint32_t previous() const { return current ^ 1u; }
     // Per-probe passes: one group of 64 threads per probe, over the probe grid.

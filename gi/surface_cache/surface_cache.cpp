@@ -60,12 +60,18 @@ SurfaceCache::SurfaceCache(rhi::IDevice& device, const scene::Scene& scene, cons
       voxels_(device, gridOverCards(cards_, lighting.voxelResolution), sdf,
               radiosityOriginOffset(lighting.trace, sdf)),
       radiosity_(device, settings.atlasSize, sdf, lighting.trace),
-      schedule_(lighting.schedule, maxAlbedo(scene)), cardTiles_(tilesWithCards(cards_.atlas())) {
+      schedule_(lighting.schedule, maxAlbedo(scene)), cardTiles_(tilesWithCards(cards_.atlas())),
+      cardBvh_(buildCardBvh(cards_.cards())) {
     const size_t cardBytes = std::max<size_t>(cards_.cards().size(), 1) * sizeof(gpu::SurfaceCard);
     cardBuffer_ = device.createBuffer({.size = cardBytes,
                                        .structStride = sizeof(gpu::SurfaceCard),
                                        .usage = rhi::BufferUsage::Structured,
                                        .debugName = "surface cards"});
+    // Moves keep the card count, so the tree keeps its node count: one buffer serves every rebuild.
+    cardBvhBuffer_ = device.createBuffer({.size = cardBvh_.nodes.size() * sizeof(gpu::CardBvhNode),
+                                          .structStride = sizeof(gpu::CardBvhNode),
+                                          .usage = rhi::BufferUsage::Structured,
+                                          .debugName = "surface card bvh"});
     schedule_.setTiles(cardTiles_);
 }
 
@@ -74,6 +80,8 @@ void SurfaceCache::uploadCards(rhi::ICommandList& commands) {
         commands.writeBuffer(*cardBuffer_, cards_.cards().data(),
                              cards_.cards().size() * sizeof(gpu::SurfaceCard));
     }
+    commands.writeBuffer(*cardBvhBuffer_, cardBvh_.nodes.data(),
+                         cardBvh_.nodes.size() * sizeof(gpu::CardBvhNode));
     tileOwner_.recordUpload(commands, cards_.atlas());
     allTiles_.recordUpload(commands, cardTiles_);
     cardsChanged_ = false;
@@ -167,6 +175,7 @@ void SurfaceCache::update(gi::FrameContext& frame, const std::optional<gi::Shado
 void SurfaceCache::moveInstance(uint32_t instance, const glm::mat4& transform,
                                 std::span<const scene::Light> lights) {
     cards_.moveInstance(instance, transform, lights);
+    cardBvh_ = buildCardBvh(cards_.cards());
     cardTiles_ = tilesWithCards(cards_.atlas());
     schedule_.setTiles(cardTiles_);
     schedule_.restart();

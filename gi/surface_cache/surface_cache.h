@@ -17,6 +17,7 @@
 #include "gi/scene/scene.h"
 #include "gi/sdf/scene_sdf.h"
 #include "gi/surface_cache/atlas_tile_list.h"
+#include "gi/surface_cache/card_bvh.h"
 #include "gi/surface_cache/card_capture_pass.h"
 #include "gi/surface_cache/radiosity_pass.h"
 #include "gi/surface_cache/radiosity_schedule.h"
@@ -76,6 +77,12 @@ public:
     // The tiles that hold cards, row-major atlas tile indices.
     const std::vector<uint32_t>& cardTiles() const { return cardTiles_; }
     const CardCapturePass& capture() const { return capture_; }
+    // The cards and their BVH on the GPU (StructuredBuffer<SurfaceCard>, <CardBvhNode>), current
+    // once update() has run since the last move: what SDF hits outside the cache read to find
+    // their card (shaders/surface_cache/card_bvh_traversal.hlsli).
+    const rhi::BufferHandle& cardBuffer() const { return cardBuffer_; }
+    const rhi::BufferHandle& cardBvhBuffer() const { return cardBvhBuffer_; }
+    const CardBvh& cardBvh() const { return cardBvh_; }
 
 private:
     void uploadCards(rhi::ICommandList& commands);
@@ -98,6 +105,8 @@ private:
     RadiosityPass radiosity_;
     RadiositySchedule schedule_;
     std::vector<uint32_t> cardTiles_;
+    CardBvh cardBvh_; // rebuilt on moves, uploaded with the cards
+    rhi::BufferHandle cardBvhBuffer_;
     bool initialised_ = false;     // the first update clears every layer and buffer
     bool cardsChanged_ = true;     // card buffer and tile-to-card lookup need an upload
     bool indirectChanged_ = false; // radiosity wrote the indirect layer after the last combine

@@ -1,10 +1,14 @@
 // lumina-kernel: cs main
-// Ray shading: each hit record to the radiance arriving along its ray. A miss sees the sky; a
-// far-field hit reads the voxel lighting volume (RGBA16F over the world box voxelMin..voxelMax:
-// rgb radiance leaving the surfaces in a voxel premultiplied by a, its occupancy), leaning back
-// from the hit along its normal. Dividing the trilinear sample by its alpha keeps empty
-// neighbour voxels from darkening a surface. Hits
-// outside the volume, or with no volume given, are black: nothing is known about their light.
+// Ray shading: each hit record to the radiance arriving along its ray. A near-field hit
+// (LUMINA_SP_FLAG_NEAR_FIELD) brings its radiance from the surface cache with it. A miss sees the
+// sky. A far-field hit reads the voxel lighting volume, in one of two conventions:
+// - the caller's (RGBA16F over the world box voxelMin..voxelMax: rgb radiance leaving the surfaces
+//   in a voxel premultiplied by a, its occupancy): the trilinear sample divided by its alpha, so
+//   empty neighbour voxels do not darken a surface;
+// - the surface cache's (LUMINA_SP_FLAG_VOXEL_GRID: rgb mean radiance, a coverage):
+//   coverage-weighted and leaning along -normal, since a cone hit stops in front of its surface, in
+//   empty voxels (coneHitVoxelRadiance).
+// Hits outside the volume, or with no volume given, are black: nothing is known about their light.
 // One group per probe; thread t shades rays t, t + 64, ...
 #include "screen_probes/screen_probe_common.hlsli"
 #include "common/sdf_tracing.hlsli"
@@ -12,66 +16,57 @@
 StructuredBuffer<ScreenProbe> gProbes : register(t0);
 StructuredBuffer<SdfHit> gHits : register(t1);
 Texture3D<float4> gVoxelLighting : register(t2);
+StructuredBuffer<float4> gNearField : register(t3); // a: LUMINA_SP_NEAR_*, with LUMINA_SP_FLAG_NEAR_FIELD
 SamplerState gLinearClamp : register(s0);
 RWStructuredBuffer<float4> gRayRadiance : register(u0); // rgb: radiance; a: 1 hit, 0 miss
 
-// Occupancy below which a filtered voxel sample counts as empty.
-#define LUMINA_SP_MIN_OCCUPANCY 1e-3
+#define LUMINA_VOXEL_LIGHTING gVoxelLighting
+#include "surface_cache/voxel_lighting_sampling.hlsli"
 
-// The filtered, occupancy-normalised volume at p, in the faces normal n points along when the
-// volume has face columns (the surface cache's: surface_cache_lighting_shared.h), each weighted
-// by the squared normal component; a = the filtered occupancy. The x coordinate is clamped half
-// a texel inside its face column so the filter never blends two faces.
-float4 voxelSample(float3 p, float3 n, uint3 dims) {
-    const float3 uvw = (p - gSp.voxelMin.xyz) / (gSp.voxelMax.xyz - gSp.voxelMin.xyz);
-    if (any(uvw < 0.0) || any(uvw > 1.0)) {
-        return float4(0.0, 0.0, 0.0, 0.0);
-    }
-    const uint faces = max(uint(gSp.voxelMin.w), 1u);
-    if (faces == 1u) {
-        const float4 v = gVoxelLighting.SampleLevel(gLinearClamp, uvw, 0.0);
-        return v.a > LUMINA_SP_MIN_OCCUPANCY ? float4(v.rgb / v.a, v.a) : float4(0.0, 0.0, 0.0, 0.0);
-    }
-    const float column = float(dims.x / faces);
-    const float x = clamp(uvw.x * column, 0.5, column - 0.5);
-    float4 sum = float4(0.0, 0.0, 0.0, 0.0);
-    for (uint axis = 0u; axis < 3u; ++axis) {
-        const float weight = n[axis] * n[axis];
-        if (weight > 0.0) {
-            const float face = float(2u * axis + (n[axis] < 0.0 ? 1u : 0u));
-            const float u = (face * column + x) / float(dims.x);
-            sum += weight * gVoxelLighting.SampleLevel(gLinearClamp, float3(u, uvw.yz), 0.0);
-        }
-    }
-    return sum.a > LUMINA_SP_MIN_OCCUPANCY ? float4(sum.rgb / sum.a, sum.a) : float4(0.0, 0.0, 0.0, 0.0);
-}
+// A cone stops once the global SDF falls below its radius r = t tan(angle), so its hit lies in
+// front of the surface by about r, and by the global SDF's shell around open surfaces (half a
+// global voxel and 0.6 mesh voxels, docs/sdf.md) more. So the lookup walks back along -n in voxel
+// steps, from half a voxel to LUMINA_SP_CONE_LEAN_RADII r + LUMINA_SP_CONE_LEAN_VOXELS voxels (at
+// most LUMINA_SP_CONE_LEAN_STEPS lookups), and takes the first that finds a surface: the nearest
+// surface behind the hit, never one beyond it. Measured in the emissive Cornell box (the cache's 64^3
+// volume, near field off): the first covered voxel lies 1 to 2 r behind most hits; no surface was
+// found for 91% of the hits at the hit, 67% within sampleVoxelLighting's 1.5 voxels, 2.8% with the
+// walk (docs/screen_probes.md).
+#define LUMINA_SP_CONE_LEAN_RADII 2.0
+#define LUMINA_SP_CONE_LEAN_VOXELS 2.0
+#define LUMINA_SP_CONE_LEAN_STEPS 32u
 
-// A far-field hit lies in front of its surface: cone tracing stops once the distance falls
-// below the cone's radius t x tan(half angle), and a coarse SDF's zero crossing sits up to half
-// a mesh voxel off the triangles, while the voxels holding the surface's light are at or behind
-// it (a wall on a voxel boundary fills only the voxels behind). A lookup at the hit itself reads
-// the empty voxels in front; so the lookup leans back along the hit normal, half a voxel first
-// (what voxel_lighting_sampling.hlsli does for sphere-traced hits), then in steps of at most a
-// voxel across the cone's radius, and takes the first that finds a surface.
-#define LUMINA_SP_MAX_VOXEL_LEANS 8u
-
-float3 voxelRadiance(float3 position, float3 normal, float t) {
-    if (!hasFlag(LUMINA_SP_FLAG_VOXEL_LIGHTING)) {
-        return float3(0.0, 0.0, 0.0);
-    }
-    uint3 dims;
-    gVoxelLighting.GetDimensions(dims.x, dims.y, dims.z);
-    const float voxel = (gSp.voxelMax.x - gSp.voxelMin.x) * max(gSp.voxelMin.w, 1.0) / float(max(dims.x, 1u));
-    const float reach = t * gSp.trace.y + voxel;
-    const uint leans = clamp(uint(ceil(reach / voxel)), 1u, LUMINA_SP_MAX_VOXEL_LEANS);
-    const float step = reach / float(leans);
-    for (uint k = 0u; k <= leans; ++k) {
-        const float4 v = voxelSample(position - (0.5 * voxel + float(k) * step) * normal, normal, dims);
+float3 coneHitVoxelRadiance(SdfHit hit) {
+    const float voxel = gSp.voxelGrid.minAndVoxelSize.w;
+    const float3 p = hit.positionAndT.xyz;
+    const float3 n = hit.normalAndCoverage.xyz;
+    const float radius = hit.positionAndT.w * gSp.trace.y;
+    const float reach = LUMINA_SP_CONE_LEAN_RADII * radius + LUMINA_SP_CONE_LEAN_VOXELS * voxel;
+    float lean = 0.5 * voxel;
+    for (uint step = 0u; step < LUMINA_SP_CONE_LEAN_STEPS && lean <= reach; ++step) {
+        const float4 v = voxelLightingTrilinear(gSp.voxelGrid, p - lean * n, n);
         if (v.a > 0.0) {
             return v.rgb;
         }
+        lean += voxel;
     }
     return float3(0.0, 0.0, 0.0);
+}
+
+float3 voxelRadiance(SdfHit hit) {
+    if (!hasFlag(LUMINA_SP_FLAG_VOXEL_LIGHTING)) {
+        return float3(0.0, 0.0, 0.0);
+    }
+    const float3 position = hit.positionAndT.xyz;
+    if (hasFlag(LUMINA_SP_FLAG_VOXEL_GRID)) {
+        return coneHitVoxelRadiance(hit);
+    }
+    const float3 uvw = (position - gSp.voxelMin.xyz) / (gSp.voxelMax.xyz - gSp.voxelMin.xyz);
+    if (any(uvw < 0.0) || any(uvw > 1.0)) {
+        return float3(0.0, 0.0, 0.0);
+    }
+    const float4 v = gVoxelLighting.SampleLevel(gLinearClamp, uvw, 0.0);
+    return v.a > LUMINA_SP_MIN_COVERAGE ? v.rgb / v.a : float3(0.0, 0.0, 0.0);
 }
 
 [numthreads(LUMINA_SP_PROBE_TEXELS, 1, 1)] void main(uint3 group : SV_GroupID, uint t : SV_GroupIndex) {
@@ -81,9 +76,17 @@ float3 voxelRadiance(float3 position, float3 normal, float t) {
     }
     const uint rayCount = gSp.rays.x;
     for (uint r = t; r < rayCount; r += LUMINA_SP_PROBE_TEXELS) {
-        const SdfHit hit = gHits[probe * rayCount + r];
+        const uint ray = probe * rayCount + r;
+        if (hasFlag(LUMINA_SP_FLAG_NEAR_FIELD)) {
+            const float4 near = gNearField[ray];
+            if (near.a != float(LUMINA_SP_NEAR_MISS)) {
+                gRayRadiance[ray] = float4(near.rgb, 1.0);
+                continue;
+            }
+        }
+        const SdfHit hit = gHits[ray];
         const bool miss = sdfIsMiss(hit);
-        const float3 radiance = miss ? gSp.sky.rgb : voxelRadiance(hit.positionAndT.xyz, hit.normalAndCoverage.xyz, hit.positionAndT.w);
-        gRayRadiance[probe * rayCount + r] = float4(radiance, miss ? 0.0 : 1.0);
+        const float3 radiance = miss ? gSp.sky.rgb : voxelRadiance(hit);
+        gRayRadiance[ray] = float4(radiance, miss ? 0.0 : 1.0);
     }
 }

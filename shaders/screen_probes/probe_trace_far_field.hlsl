@@ -3,25 +3,30 @@
 // (sdfConeTraceGlobal), from the probe position lifted off its surface along the normal (the
 // global SDF is coarse: starting on the surface would hit it at once). Writes one hit record per
 // ray (SdfHit: distance, position, normal, miss flag); probe_ray_shading turns them into radiance.
+// After the near field (LUMINA_SP_FLAG_NEAR_FIELD), only the rays it missed are traced, from the
+// near-field distance on: a near hit keeps the hit record the near field wrote.
 // One group per probe; thread t traces rays t, t + 64, ...
-#include "sdf/sdf_scene_bindings.hlsli"
-#include "screen_probes/screen_probe_common.hlsli"
+#include "screen_probes/probe_trace_common.hlsli"
 
-StructuredBuffer<ScreenProbe> gProbes : register(t6);
-StructuredBuffer<ProbeRay> gRays : register(t7);
+StructuredBuffer<float4> gNearField : register(t8); // a: LUMINA_SP_NEAR_*, with LUMINA_SP_FLAG_NEAR_FIELD
 RWStructuredBuffer<SdfHit> gHits : register(u0);
 
 [numthreads(LUMINA_SP_PROBE_TEXELS, 1, 1)] void main(uint3 group : SV_GroupID, uint t : SV_GroupIndex) {
-    const uint probe = probeIndexOfGroup(group);
-    if (probe >= gSp.grid.w || !probeIsValid(gProbes[probe])) {
+    uint probe;
+    float3 origin;
+    if (!tracedProbe(group, probe, origin)) {
         return;
     }
-    const ScreenProbe p = gProbes[probe];
-    const float3 origin = p.positionAndDepth.xyz + p.normal.xyz * gSp.trace.z;
     const SdfTraceParams params = sdfDefaultTraceParams(gSp.trace.x);
+    const bool nearField = hasFlag(LUMINA_SP_FLAG_NEAR_FIELD);
+    const float tMin = nearField ? gSp.trace.w : 0.0;
     const uint rayCount = gSp.rays.x;
     for (uint r = t; r < rayCount; r += LUMINA_SP_PROBE_TEXELS) {
-        const float3 direction = gRays[probe * rayCount + r].directionAndWeight.xyz;
-        gHits[probe * rayCount + r] = sdfConeTraceGlobal(origin, direction, 0.0, gSp.trace.y, params);
+        const uint ray = probe * rayCount + r;
+        if (nearField && gNearField[ray].a != float(LUMINA_SP_NEAR_MISS)) {
+            continue;
+        }
+        const float3 direction = gRays[ray].directionAndWeight.xyz;
+        gHits[ray] = sdfConeTraceGlobal(origin, direction, tMin, gSp.trace.y, params);
     }
 }

@@ -4,6 +4,7 @@
 // shaders/screen_probes/, docs/screen_probes.md), for C++ and HLSL.
 #include "../common/camera_shared.h"
 #include "../common/sdf_scene_shared.h"
+#include "../surface_cache/surface_cache_lighting_shared.h"
 #include "octahedral_shared.h"
 
 LUMINA_GPU_NAMESPACE_BEGIN
@@ -31,6 +32,20 @@ LUMINA_GPU_NAMESPACE_BEGIN
 #define LUMINA_SP_FLAG_PROBE_HISTORY 1u  // the previous frame's probes and radiance may be reused
 #define LUMINA_SP_FLAG_SCREEN_HISTORY 2u // the previous frame's gathered irradiance may be reused
 #define LUMINA_SP_FLAG_VOXEL_LIGHTING 4u // far-field hits read the voxel lighting volume
+// The near field traced every ray this frame: the far field traces only its misses, from trace.w on.
+#define LUMINA_SP_FLAG_NEAR_FIELD 8u
+// The voxel lighting is the surface cache's (voxelGrid: rgb mean radiance, a coverage), read leaning
+// along -normal (sampleVoxelLighting).
+#define LUMINA_SP_FLAG_VOXEL_GRID 16u
+
+// What the near field found along a ray: the a lane of the per-ray near-field result.
+#define LUMINA_SP_NEAR_MISS 0u  // nothing within trace.w: the far field traces on
+#define LUMINA_SP_NEAR_CARD 1u  // a hit, radiance from its card's final-lighting texels
+#define LUMINA_SP_NEAR_VOXEL 2u // a hit no card covers, radiance from the voxel lighting
+
+// Filtered coverage below which a lookup counts as empty (voxel lighting, card texels): a
+// bilinear or trilinear weight this small means no covered texel lies within the footprint.
+#define LUMINA_SP_MIN_COVERAGE 1e-3f
 
 // ProbeRay::info.y
 #define LUMINA_SP_STRATEGY_BRDF 0u
@@ -59,19 +74,22 @@ struct ScreenProbeConstants {
     uint4 screen;             // x, y: image size; z: frame index (ray jitter); w: LUMINA_SP_FLAG_*
     uint4 rays;               // x: rays per probe; y: BRDF rays; z: lighting rays; w: 0
     float4 sky;               // rgb: sky radiance, what a ray that leaves the scene sees
-    float4 voxelMin;          // xyz: world corner of the voxel lighting volume; w: face columns (1 or 6)
+    float4 voxelMin;          // xyz: world corner of the voxel lighting volume
     float4 voxelMax;          // xyz: far corner
     float4 trace;             // x: max distance (world); y: tan of the cone half angle; z: origin bias
-                              // (world, along the probe normal); w: 0
+                              // (world, along the probe normal); w: near-field distance (world; 0 when
+                              // the near field does not run)
     float4 temporal;          // x: probe history blend (weight of the new frame); y: outlier clamp (x the
                               // probe's history luminance); z: screen blend; w: lighting PDF floor
     float4 filter;            // x: plane-distance scale (x view depth); y: normal power; z: history plane
                               // tolerance (x view depth); w: cos of the history normal tolerance
+    VoxelGridInfo voxelGrid;  // the surface cache's voxel lighting (near-field fallback; far hits with
+                              // LUMINA_SP_FLAG_VOXEL_GRID); zero without a surface cache
 };
 
 LUMINA_STATIC_ASSERT_SIZE(ScreenProbe, 48);
 LUMINA_STATIC_ASSERT_SIZE(ProbeRay, 32);
-LUMINA_STATIC_ASSERT_SIZE(ScreenProbeConstants, 432);
+LUMINA_STATIC_ASSERT_SIZE(ScreenProbeConstants, 464);
 
 LUMINA_GPU_NAMESPACE_END
 

@@ -105,9 +105,6 @@ struct ReferenceCase {
     const char* scene;
     double relMseBound;   // regression bound on the final image's relMSE
     double meanTolerance; // |mean green / the path tracer's - 1|
-    // The surface cache leaks light through this scene's zero-thickness walls (below): lumen is
-    // expected to lose to direct-only, and the check says so once that is fixed.
-    bool leaksThroughThinWalls = false;
 };
 
 void PrintTo(const ReferenceCase& c, std::ostream* out) {
@@ -156,13 +153,7 @@ TEST_P(FrameVsPathTracerGpu, LumenBeatsDirectOnly) {
                 100.0 * (meanRatio - 1.0), meanGreen(direct), meanGreen(reference), traced.samples,
                 traced.meanRelativeStandardError);
     h.timings().print(std::cout);
-    if (c.leaksThroughThinWalls) {
-        EXPECT_GT(lumenRelMse, directRelMse)
-            << c.scene << ": lumen now beats direct-only: the leak through thin walls is fixed? Set "
-            << "leaksThroughThinWalls = false and tighten the bounds (docs/gi_tests.md)";
-    } else {
-        EXPECT_LT(lumenRelMse, directRelMse);
-    }
+    EXPECT_LT(lumenRelMse, directRelMse);
     EXPECT_LT(lumenRelMse, c.relMseBound);
     EXPECT_NEAR(meanRatio, 1.0, c.meanTolerance);
 }
@@ -184,7 +175,7 @@ std::string referenceName(const ::testing::TestParamInfo<std::tuple<rhi::Api, Re
 const ReferenceCase kReferenceCases[] = {
     {.scene = "cornell_box_point", .relMseBound = 0.075, .meanTolerance = 0.1},
     {.scene = "cornell_box", .relMseBound = 0.15, .meanTolerance = 0.3},
-    {.scene = "open_top_box", .relMseBound = 40.0, .meanTolerance = 6.0, .leaksThroughThinWalls = true},
+    {.scene = "open_top_box", .relMseBound = 0.15, .meanTolerance = 0.3},
 };
 
 INSTANTIATE_TEST_SUITE_P(Scenes, FrameVsPathTracerGpu,

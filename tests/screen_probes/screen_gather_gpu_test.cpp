@@ -21,6 +21,7 @@
 #include <map>
 #include <numbers>
 #include <random>
+#include <string>
 
 namespace lumina::test {
 namespace {
@@ -188,15 +189,25 @@ TEST_P(ScreenGatherGpuTest, DumpWritesEveryIntermediateAsItIs) {
 }
 
 // Not a test: GPU time per pass (median of 10 frames after 3), for docs/screen_probes.md. Run with
-// --gtest_also_run_disabled_tests --gtest_filter='*PrintPassTimes*'; LUMINA_SP_TIMING_SIZE=WxH.
+// --gtest_also_run_disabled_tests --gtest_filter='*PrintPassTimes*'; LUMINA_SP_TIMING_SIZE=WxH;
+// LUMINA_SP_TIMING_NEAR_FIELD=D adds a surface cache and traces the near field up to D (world
+// units; "default": the setting's default), else there is no near field.
 TEST_P(ScreenGatherGpuTest, DISABLED_PrintPassTimes) {
     LUMINA_REQUIRE_KERNELS();
     uint32_t width = 320, height = 180;
     if (const char* size = std::getenv("LUMINA_SP_TIMING_SIZE")) {
         std::sscanf(size, "%ux%u", &width, &height);
     }
-    ScreenProbeHarness harness(device(), shaders(), scene::loadScene("cornell_box_point"), width, height, {},
-                               32);
+    gi::ScreenProbeSettings settings;
+    const char* nearField = std::getenv("LUMINA_SP_TIMING_NEAR_FIELD");
+    if (nearField && std::string(nearField) != "default") {
+        settings.nearFieldDistance = std::stof(nearField);
+    }
+    ScreenProbeHarness harness(device(), shaders(), scene::loadScene("cornell_box_point"), width, height,
+                               settings, 32);
+    if (nearField) {
+        harness.addSurfaceCache(cornellCacheSettings());
+    }
     harness.setSky(glm::vec3(0.5f));
     harness.fillVoxels([](uint32_t, uint32_t, uint32_t) { return glm::vec4(0.5f, 0.5f, 0.5f, 1.0f); });
     std::map<std::string, std::vector<double>> times;
@@ -208,7 +219,13 @@ TEST_P(ScreenGatherGpuTest, DISABLED_PrintPassTimes) {
             }
         }
     }
-    std::cout << device().adapter().name << ", " << width << "x" << height << '\n';
+    const gpu::SdfSceneInfo grid = harness.sdf().sceneInfo();
+    const float diagonal =
+        glm::length(glm::vec3(grid.globalMaxAndMaxDistance) - glm::vec3(grid.globalMinAndVoxelSize));
+    const float near =
+        settings.nearFieldDistance.value_or(gi::ScreenProbeSettings::kNearFieldGridFraction * diagonal);
+    std::cout << device().adapter().name << ", " << width << "x" << height << ", near field "
+              << (nearField ? near : 0.0f) << " (global SDF diagonal " << diagonal << ")\n";
     double total = 0.0;
     for (auto& [name, ms] : times) {
         std::sort(ms.begin(), ms.end());

@@ -1,7 +1,8 @@
 #pragma once
 // A scene on a test device with everything the screen probes read: the deferred renderer (for
-// the GBuffer), the scene's SDFs, a voxel lighting volume the test fills, and the gather. Each
-// render() records one frame (SDF compose, deferred frame, screen probes), submits it and waits.
+// the GBuffer), the scene's SDFs, a voxel lighting volume the test fills, optionally a surface
+// cache, and the gather. Each render() records one frame (SDF compose, deferred frame, surface
+// cache update, screen probes), submits it and waits.
 #include "gi/core/frame_context.h"
 #include "gi/core/pipeline_cache.h"
 #include "gi/deferred/buffer_readback.h"
@@ -12,9 +13,12 @@
 #include "gi/screen_probes/screen_probe_gather.h"
 #include "gi/sdf/scene_sdf.h"
 #include "gi/sdf/sdf_atlas.h"
+#include "gi/surface_cache/surface_cache.h"
 #include "rhi/rhi.h"
 
+#include <algorithm>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,17 +34,38 @@ inline scene::Scene cornellWithSky() {
     return scene;
 }
 
+// The Cornell box's surface cache at one 64-texel tile per wall (8.7 mm texels); card padding
+// 20 mm, more than the harness's mesh-SDF voxel (555 / 32 = 17 mm) off which open-surface hits
+// may lie.
+inline surface_cache::SurfaceCacheSettings cornellCacheSettings() {
+    surface_cache::SurfaceCacheSettings s;
+    s.atlasSize = 512;
+    s.texelsPerUnit = 0.1f;
+    s.minPaddingUnits = 20.0f;
+    return s;
+}
+
+// Converges in a dozen updates (0.73^10 < 0.05) instead of the default's 36: enough for tests that
+// compare the probes with the cache as it is, not with the path tracer.
+inline surface_cache::SurfaceLightingSettings quickCacheLighting() {
+    surface_cache::SurfaceLightingSettings s;
+    s.schedule.tolerance = 0.05f;
+    s.schedule.refinementPasses = 0;
+    return s;
+}
+
 class ScreenProbeHarness {
 public:
     // Voxel lighting is a dims^3 volume over the global SDF's grid: far-field hits land anywhere in
     // it (a cone "hits" where it comes within its radius of a surface, in front of an opening too).
     ScreenProbeHarness(rhi::IDevice& device, rhi::ShaderLibrary& shaders, scene::Scene scene, uint32_t width,
-                       uint32_t height, gi::ScreenProbeSettings settings = {}, uint32_t voxelDims = 8)
+                       uint32_t height, gi::ScreenProbeSettings settings = {}, uint32_t voxelDims = 8,
+                       const sdf::SceneSdfSettings& sdfs = sdfSettings())
         : device_(device), scene_(std::move(scene)), pipelines_(device, shaders), gpuScene_(device, scene_),
           renderer_(device, scene_, gpuScene_,
                     {.width = width, .height = height, .log = [](std::string_view) {}}),
-          sdf_(device, scene_, sdfSettings()), probes_(device, width, height, settings),
-          camera_(scene_.camera), list_(device.createCommandList()), voxelDims_(voxelDims) {
+          sdf_(device, scene_, sdfs), probes_(device, width, height, settings), camera_(scene_.camera),
+          list_(device.createCommandList()), voxelDims_(voxelDims) {
         const gpu::SdfSceneInfo grid = sdf_.sceneInfo();
         voxelMin_ = glm::vec3(grid.globalMinAndVoxelSize);
         voxelMax_ = glm::vec3(grid.globalMaxAndMaxDistance);
@@ -85,6 +110,17 @@ public:
         renderer_.setCamera(camera);
     }
     void useVoxelLighting(bool use) { useVoxels_ = use; }
+    // Builds a surface cache of the scene: every render() updates it (lit by the deferred
+    // renderer's lights) before the probes run, and hands it to them while `give`.
+    void addSurfaceCache(const surface_cache::SurfaceCacheSettings& settings,
+                         const surface_cache::SurfaceLightingSettings& lighting = {}) {
+        cache_ = std::make_unique<surface_cache::SurfaceCache>(device_, scene_, gpuScene_, sdf_, settings,
+                                                               lighting);
+    }
+    void giveSurfaceCache(bool give) { giveCache_ = give; }
+    // Hands the surface cache's voxel lighting to the probes as the caller's own volume (looked up
+    // at far hits as a plain volume is) instead of the test's.
+    void useCacheVolumeAsPlainVolume(bool use) { cacheVolumeAsPlain_ = use; }
 
     // Records and runs one frame; returns the names of the timed passes that ran, in order.
     std::vector<std::string> render() {
@@ -92,11 +128,26 @@ public:
         gi::FrameContext frame(pipelines_, *list_, frameIndex_++);
         sdf_.record(frame);
         renderer_.render(frame);
+        std::optional<gi::SurfaceCacheView> cache;
+        gi::VoxelLighting voxels{useVoxels_ ? voxels_ : nullptr, voxelMin_, voxelMax_};
+        if (cache_) {
+            cache_->update(frame, renderer_.shadowedLights());
+            if (giveCache_) {
+                cache = gi::surfaceCacheView(*cache_);
+            }
+            if (cacheVolumeAsPlain_) {
+                const gpu::VoxelGridInfo& grid = cache_->voxelLighting().grid();
+                const glm::vec3 lo(grid.minAndVoxelSize);
+                voxels = {cache_->voxelLighting().volume(), lo,
+                          lo + glm::vec3(grid.dims) * grid.minAndVoxelSize.w};
+            }
+        }
         probes_.record(frame, {.gbuffer = renderer_.gbuffer(),
                                .camera = camera_,
                                .sdf = sdf_,
                                .sky = sky_,
-                               .voxelLighting = {useVoxels_ ? voxels_ : nullptr, voxelMin_, voxelMax_}});
+                               .voxelLighting = voxels,
+                               .surfaceCache = cache});
         list_->end();
         skipped_ = frame.skipped();
         rhi::IQueue& queue = device_.queue(rhi::QueueType::Graphics);
@@ -107,6 +158,23 @@ public:
             passes.push_back(timer.name);
         }
         return passes;
+    }
+
+    // Renders until the surface cache has converged: radiosity stopped, and the combine after its
+    // last bounce ran in the same frame. Returns the frames rendered (maxFrames: it did not converge).
+    uint32_t renderUntilCacheConverged(uint32_t maxFrames) {
+        const auto skipped = [&](const char* pass) {
+            return std::any_of(skipped_.begin(), skipped_.end(),
+                               [&](const gi::SkippedPass& s) { return s.pass == pass; });
+        };
+        for (uint32_t frame = 1; frame <= maxFrames; ++frame) {
+            render();
+            if (skipped(surface_cache::RadiosityPass::kTracePassName) &&
+                !skipped(surface_cache::SurfaceCacheCombinePass::kPassName)) {
+                return frame;
+            }
+        }
+        return maxFrames;
     }
 
     image::Image read(const rhi::TextureHandle& texture) { return gi::readTextureImage(device_, *texture); }
@@ -125,6 +193,8 @@ public:
     gi::ScreenProbeGather& probes() { return probes_; }
     gi::DeferredRenderer& renderer() { return renderer_; }
     const scene::Scene& scene() const { return scene_; }
+    const sdf::SceneSdf& sdf() const { return sdf_; }
+    const surface_cache::SurfaceCache& cache() const { return *cache_; }
 
 private:
     rhi::IDevice& device_;
@@ -142,6 +212,9 @@ private:
     glm::vec3 voxelMin_{0.0f}, voxelMax_{0.0f};
     glm::vec3 sky_{0.0f};
     bool useVoxels_ = true;
+    std::unique_ptr<surface_cache::SurfaceCache> cache_;
+    bool giveCache_ = true;
+    bool cacheVolumeAsPlain_ = false;
     std::vector<rhi::TimerResult> timings_;
     std::vector<gi::SkippedPass> skipped_;
 };

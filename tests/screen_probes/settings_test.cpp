@@ -31,6 +31,8 @@ TEST(ScreenProbeSettings, DefaultsAreValid) {
     EXPECT_EQ(s.probeSpacing, 8u);
     EXPECT_EQ(s.raysPerProbe, 64u);
     EXPECT_FLOAT_EQ(s.probeHistoryBlend, 0.1f);
+    EXPECT_FALSE(s.nearFieldDistance.has_value()); // a fraction of the global SDF's diagonal
+    EXPECT_NO_THROW(ScreenProbeSettings{.nearFieldDistance = 0.0f}.validate());
 }
 
 TEST(ScreenProbeSettings, BadValuesAreRefusedByName) {
@@ -44,6 +46,8 @@ TEST(ScreenProbeSettings, BadValuesAreRefusedByName) {
     expectRefused([](auto& s) { s.probeHistoryBlend = std::nanf(""); }, "probeHistoryBlend", "nan");
     expectRefused([](auto& s) { s.outlierClamp = 0.5f; }, "outlierClamp", "0.5");
     expectRefused([](auto& s) { s.coneHalfAngle = -0.1f; }, "coneHalfAngle", "-0.1");
+    expectRefused([](auto& s) { s.nearFieldDistance = -1.0f; }, "nearFieldDistance", "-1");
+    expectRefused([](auto& s) { s.nearFieldDistance = INFINITY; }, "nearFieldDistance", "inf");
     expectRefused([](auto& s) { s.filterNormalPower = 0.0f; }, "filterNormalPower", "0");
     expectRefused([](auto& s) { s.screenHistoryBlend = 2.0f; }, "screenHistoryBlend", "2");
 }

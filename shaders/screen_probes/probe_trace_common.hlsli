@@ -1,0 +1,26 @@
+#ifndef LUMINA_PROBE_TRACE_COMMON_HLSLI
+#define LUMINA_PROBE_TRACE_COMMON_HLSLI
+// What the near-field and far-field traces share, bound by probeTracePass
+// (gi/screen_probes/probe_trace_bindings.h): the SDF scene (b0, t0-t5, s0), the constants (b1),
+// this frame's probes (t6) and the rays (t7); and where a probe's rays start.
+#include "sdf/sdf_scene_bindings.hlsli"
+#include "screen_probes/screen_probe_common.hlsli"
+
+StructuredBuffer<ScreenProbe> gProbes : register(t6);
+StructuredBuffer<ProbeRay> gRays : register(t7);
+
+// The probe a per-probe group traces for and the origin of its rays: its position lifted off the
+// surface along its normal by the origin bias (the global SDF is coarse: starting on the surface
+// would hit it at once), the same for both fields. False when the group has no valid probe (sky).
+bool tracedProbe(uint3 group, out uint probe, out float3 origin) {
+    probe = probeIndexOfGroup(group);
+    origin = float3(0.0, 0.0, 0.0);
+    if (probe >= gSp.grid.w || !probeIsValid(gProbes[probe])) {
+        return false;
+    }
+    const ScreenProbe p = gProbes[probe];
+    origin = p.positionAndDepth.xyz + p.normal.xyz * gSp.trace.z;
+    return true;
+}
+
+#endif

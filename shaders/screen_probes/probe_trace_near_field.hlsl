@@ -1,0 +1,87 @@
+// lumina-kernel: cs main
+// Pass 5, near-field trace: every ray of every valid probe sphere-traced through the mesh SDFs
+// (sdfTraceNearField: the instance BVH, closest hit) from the far field's origin, up to the
+// near-field distance (trace.w). A hit finds the card that owns it through the card BVH
+// (findCardOwner, the rule of card_bvh_shared.h) and reads the surface cache's final layer there:
+// the outgoing radiance of the surface, i.e. the radiance arriving back along the ray. Where no
+// card owns the hit, or none of the card's texels around it were captured, the voxel lighting at
+// the hit stands in (sampleVoxelLighting). Writes the hit record (the far field replaces the
+// misses' with its own) and the near-field result (rgb radiance, a: LUMINA_SP_NEAR_*).
+// One group per probe; thread t traces rays t, t + 64, ...
+#include "screen_probes/probe_trace_common.hlsli"
+#include "surface_cache/card_bvh_shared.h"
+
+StructuredBuffer<CardBvhNode> gCardBvh : register(t8);
+StructuredBuffer<SurfaceCard> gCards : register(t9);
+Texture2D<float4> gFinalLighting : register(t10); // outgoing radiance; a = 1 where a surface was captured
+Texture3D<float4> gVoxelLighting : register(t11); // rgb mean radiance, a coverage (over gSp.voxelGrid)
+RWStructuredBuffer<SdfHit> gHits : register(u0);
+RWStructuredBuffer<float4> gNearField : register(u1);
+
+#define LUMINA_CARD_BVH_NODE(i) gCardBvh[i]
+#define LUMINA_SURFACE_CARD(i) gCards[i]
+#include "surface_cache/card_bvh_traversal.hlsli"
+#define LUMINA_VOXEL_LIGHTING gVoxelLighting
+#include "surface_cache/voxel_lighting_sampling.hlsli"
+
+// The final layer around world point p on `card`: bilinear over the four texels around p's
+// card-space (u, v), each weighted by its coverage so that uncaptured texels (a = 0, rgb = 0) do
+// not darken the surface. The footprint is clamped into the card's rectangle (texel centres from
+// x + 0.5 to x + width - 0.5), so a neighbouring card's texels never bleed in; a hit in the
+// card's padding reads its edge. rgb: radiance; a: the summed weight of covered texels.
+float4 cardRadiance(SurfaceCard card, float3 p) {
+    const float2 rectMin = float2(card.atlasRect.xy);
+    const float2 rectMax = rectMin + float2(card.atlasRect.zw) - 1.0;
+    // Texel-centre coordinates: texel i's centre at i.
+    const float2 x = clamp(cardToAtlasTexel(card, worldToCardSpace(card, p).xy) - 0.5, rectMin, rectMax);
+    const float2 base = floor(x);
+    const float2 f = x - base;
+    float4 sum = float4(0.0, 0.0, 0.0, 0.0);
+    for (uint corner = 0u; corner < 4u; ++corner) {
+        const float2 offset = float2(corner & 1u, corner >> 1);
+        const float2 w2 = lerp(1.0 - f, f, offset);
+        const int2 texel = int2(min(base + offset, rectMax));
+        const float4 v = gFinalLighting.Load(int3(texel, 0));
+        const float w = w2.x * w2.y * v.a;
+        sum += float4(w * v.rgb, w);
+    }
+    return sum.a > LUMINA_SP_MIN_COVERAGE ? float4(sum.rgb / sum.a, sum.a) : float4(0.0, 0.0, 0.0, 0.0);
+}
+
+// Radiance leaving the surface at a near-field hit towards the probe, and where it came from.
+float4 nearFieldRadiance(SdfHit hit, float3 direction) {
+    const float3 p = hit.positionAndT.xyz;
+    // The SDF normal faces the side the ray came from, also on open (unsigned) surfaces; the
+    // reversed ray stands in where the field's gradient vanished.
+    const float3 n = dot(hit.normalAndCoverage.xyz, hit.normalAndCoverage.xyz) > 0.0
+                         ? hit.normalAndCoverage.xyz
+                         : -direction;
+    const CardOwner owner = findCardOwner(p, n);
+    if (owner.card != LUMINA_NO_CARD) {
+        const float4 card = cardRadiance(gCards[owner.card], p);
+        if (card.a > 0.0) {
+            return float4(card.rgb, float(LUMINA_SP_NEAR_CARD));
+        }
+    }
+    return float4(sampleVoxelLighting(gSp.voxelGrid, p, n), float(LUMINA_SP_NEAR_VOXEL));
+}
+
+// Traces ray `ray` of a probe from `origin`: the hit record and the near-field result.
+void traceNearField(uint ray, float3 origin) {
+    const float3 direction = gRays[ray].directionAndWeight.xyz;
+    const SdfHit hit = sdfTraceNearField(origin, direction, 0.0, sdfDefaultTraceParams(gSp.trace.w));
+    gHits[ray] = hit;
+    gNearField[ray] = sdfIsMiss(hit) ? float4(0.0, 0.0, 0.0, float(LUMINA_SP_NEAR_MISS))
+                                     : nearFieldRadiance(hit, direction);
+}
+
+[numthreads(LUMINA_SP_PROBE_TEXELS, 1, 1)] void main(uint3 group : SV_GroupID, uint t : SV_GroupIndex) {
+    uint probe;
+    float3 origin;
+    if (!tracedProbe(group, probe, origin)) {
+        return;
+    }
+    for (uint r = t; r < gSp.rays.x; r += LUMINA_SP_PROBE_TEXELS) {
+        traceNearField(probe * gSp.rays.x + r, origin);
+    }
+}
