@@ -66,6 +66,7 @@ enum class Alpha {
     Flag,   // 0 or 1 (a hit, a surface)
     Weight, // a weight w >= 0 of expected value about 1: w / (1 + w)
     Frames, // frames accumulated (saturates at 255): a / 255
+    Source, // the near field's LUMINA_SP_NEAR_* (miss 0, card 1, voxel 2): a / 2
 };
 
 // Radiance (times `scale`) through the display transform, and the alpha channel as `alpha` says.
@@ -81,7 +82,10 @@ image::Image lightingView(const image::Image& linear, float scale, Alpha alpha) 
         const std::span<float> to = out.addChannel("A");
         for (size_t i = 0; i < a.size(); ++i) {
             const float v = a[i];
-            to[i] = alpha == Alpha::Weight ? v / (1.0f + v) : alpha == Alpha::Frames ? v / 255.0f : v;
+            to[i] = alpha == Alpha::Weight   ? v / (1.0f + v)
+                    : alpha == Alpha::Frames ? v / 255.0f
+                    : alpha == Alpha::Source ? v / 2.0f
+                                             : v;
         }
     }
     return out;
@@ -188,6 +192,10 @@ TEST_P(FrameGoldenTest, ScreenProbePassesSurfaceCacheLayersAndFrameMatchTheirGol
     const image::Image rays = zeroInvalidProbes(
         gi::probeRayImage(rhi::readBufferAs<gpu::float4>(device(), *r.rayRadiance), r.raysPerProbe, gw, gh),
         probes, gw, gh);
+    ASSERT_TRUE(gather.nearFieldTraced()) << name << ": the lumen preset traces a near field";
+    const image::Image nearField = zeroInvalidProbes(
+        gi::probeRayImage(rhi::readBufferAs<gpu::float4>(device(), *r.nearField), r.raysPerProbe, gw, gh),
+        probes, gw, gh);
     const image::Image composite = perTexel(r.frameRadiance);
     const image::Image history = perTexel(r.history[current]);
     const image::Image filtered = perTexel(r.filtered);
@@ -196,6 +204,7 @@ TEST_P(FrameGoldenTest, ScreenProbePassesSurfaceCacheLayersAndFrameMatchTheirGol
     const image::Image screenResult = h.read(r.screenIrradiance[current]);
     const image::Image hdr = h.hdr();
     for (const auto& [what, image] : {std::pair{"ray radiance", &rays},
+                                      {"near field", &nearField},
                                       {"composite", &composite},
                                       {"history", &history},
                                       {"filtered", &filtered},
@@ -210,6 +219,7 @@ TEST_P(FrameGoldenTest, ScreenProbePassesSurfaceCacheLayersAndFrameMatchTheirGol
     GoldenChecks checks = {
         {spec(name, "probe_position", kUnitRange, 0.0f, 1.5f), position},
         {spec(name, "probe_normal", kNormals, -1.0f, 1.0f), normal},
+        {spec(name, "near_field", kLighting), lightingView(nearField, 1.0f, Alpha::Source)},
         {spec(name, "ray_radiance", kLighting), lightingView(rays, 1.0f, Alpha::Flag)},
         {spec(name, "probe_composite", kLighting), lightingView(composite, 1.0f, Alpha::Weight)},
         {spec(name, "probe_history", kLighting), lightingView(history, 1.0f, Alpha::Weight)},
