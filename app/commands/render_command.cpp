@@ -87,6 +87,13 @@ int runRender(const ParsedArgs& args) {
         loaded.image = {args.common.size->width, args.common.size->height};
     }
     const std::filesystem::path out = args.common.out.empty() ? loaded.name + ".png" : args.common.out;
+    // Before the frames, not after them: a lumen render runs for minutes on a CPU device, and
+    // an output folder that does not exist yet should not cost them.
+    for (const std::filesystem::path& file : {out, std::filesystem::path(args.get("exr"))}) {
+        if (file.has_parent_path()) {
+            std::filesystem::create_directories(file.parent_path());
+        }
+    }
 
     rhi::DeviceHandle device = openDevice(args.common);
     std::cout << "device: " << device->adapter().name << " (" << rhi::apiName(device->api()) << ", driver "
