@@ -215,21 +215,21 @@ Command renderCommand() {
             "and PNG. --timings prints the median GPU time of each pass from timestamp queries and how "
             "often each pass was skipped and why (shadow maps and surface-cache passes run only when "
             "something they read changed).",
-        .flags =
-            {{"technique", "NAME", "GI technique: direct (none) or lumen (default: the scene's, else lumen)"},
-             {"preset", "NAME",
-              "lumen quality preset: low, medium or high (default: the scene's, else medium)"},
-             {"probe-spacing", "N", "pixels per screen-probe edge (overrides the preset; 2..64)"},
-             {"rays-per-probe", "N", "rays per screen probe (overrides the preset; 16..256)"},
-             {"near-field-distance", "D",
-              "screen-probe near-field trace length in scene units (0: far field only; default: a quarter "
-              "of the global SDF's diagonal)"},
-             {"exr", "PATH", "also write the linear HDR result as EXR"},
-             {"dump-buffers", "DIR", "write every intermediate buffer into DIR"},
-             {"timings", "", "print the GPU time per pass (direct: 60 frames unless --frames)"},
-             {"timings-json", "PATH", "write the per-pass timings as JSON"},
-             {"warmup", "N", "frames left out of the timings (default 0)"},
-             {"exposure", "EV", "exposure in stops before the tonemap (default 0)"}},
+        .flags = {{"technique", "NAME",
+                   "GI technique: direct (none) or lumen (default: the scene's, else lumen)"},
+                  {"preset", "NAME",
+                   "lumen quality preset: low, medium or high (default: the scene's, else medium)"},
+                  {"probe-spacing", "N", "pixels per screen-probe edge (overrides the preset; 2..64)"},
+                  {"rays-per-probe", "N", "rays per screen probe (overrides the preset; 16..256)"},
+                  {"near-field-distance", "D",
+                   "screen-probe near-field trace length in scene units (0: far field only; default: the "
+                   "preset's, a tenth of the scene's largest extent)"},
+                  {"exr", "PATH", "also write the linear HDR result as EXR"},
+                  {"dump-buffers", "DIR", "write every intermediate buffer into DIR"},
+                  {"timings", "", "print the GPU time per pass (direct: 60 frames unless --frames)"},
+                  {"timings-json", "PATH", "write the per-pass timings as JSON"},
+                  {"warmup", "N", "frames left out of the timings (default 0)"},
+                  {"exposure", "EV", "exposure in stops before the tonemap (default 0)"}},
         .run = runRender};
 }
 
