@@ -3,6 +3,7 @@
 #include "gi/core/frame_context.h"
 #include "gi/deferred/buffer_readback.h"
 #include "gi/frame/frame_renderer.h"
+#include "gi/frame/indirect_term.h"
 #include "gi/gpu_scene/gpu_scene.h"
 #include "gi/measure/compare.h"
 #include "gi/measure/metrics.h"
@@ -95,17 +96,6 @@ void runFrames(rhi::IDevice& device, PipelineCache& pipelines, const RunRequest&
     run.framesToConverge = framesToConverge(run.checkpoints);
 }
 
-// What the renderer's composite adds for indirect light; black without GI.
-image::Image readIndirectRadiance(rhi::IDevice& device, const FrameRenderer& renderer) {
-    const rhi::TextureHandle irradiance = renderer.indirect();
-    if (!irradiance) {
-        return image::Image::rgb(renderer.deferred().width(), renderer.deferred().height());
-    }
-    return indirectRadiance(readTextureImage(device, *irradiance),
-                            readTextureImage(device, *renderer.deferred().gbuffer().albedo),
-                            renderer.indirectScale());
-}
-
 void checkRequest(const RunRequest& request, const Reference& reference) {
     if (request.frames == 0) {
         throw std::invalid_argument("bench: at least one frame per run");
@@ -152,20 +142,6 @@ uint32_t framesToConverge(const std::vector<Checkpoint>& checkpoints, double tol
         }
     }
     return checkpoints.back().frame;
-}
-
-image::Image indirectRadiance(const image::Image& irradiance, const image::Image& albedo, float scale) {
-    if (!irradiance.sameSize(albedo)) {
-        throw image::ImageError("indirect radiance: irradiance is " + std::to_string(irradiance.width()) +
-                                "x" + std::to_string(irradiance.height()) + ", albedo " +
-                                std::to_string(albedo.width()) + "x" + std::to_string(albedo.height()));
-    }
-    image::Image radiance = image::Image::rgb(irradiance.width(), irradiance.height());
-    for (const char* c : {"R", "G", "B"}) {
-        std::ranges::transform(irradiance.channel(c), albedo.channel(c), radiance.channel(c).begin(),
-                               [scale](float e, float a) { return scale * e * a; });
-    }
-    return radiance;
 }
 
 TechniqueRun runRealTime(rhi::IDevice& device, PipelineCache& pipelines, const scene::Scene& scene,

@@ -99,9 +99,4 @@ std::vector<uint32_t> checkpointFrames(uint32_t frames);
 // The first checkpoint whose relMSE is within `tolerance` (relative) of the last one's.
 uint32_t framesToConverge(const std::vector<Checkpoint>& checkpoints, double tolerance = 0.05);
 
-// The radiance a real-time renderer's indirect term adds, as its composite computes it:
-// scale x irradiance x albedo per channel (R, G, B of both; the sizes must match, ImageError
-// otherwise).
-image::Image indirectRadiance(const image::Image& irradiance, const image::Image& albedo, float scale);
-
 } // namespace lumina::gi

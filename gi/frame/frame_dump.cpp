@@ -1,6 +1,7 @@
 #include "gi/frame/frame_dump.h"
 
 #include "gi/deferred/buffer_readback.h"
+#include "gi/frame/indirect_term.h"
 #include "gi/image/exr.h"
 #include "gi/image/png.h"
 #include "gi/screen_probes/screen_probe_readback.h"
@@ -22,16 +23,9 @@ std::vector<std::filesystem::path> dumpFrameBuffers(rhi::IDevice& device, const 
     irradiance.removeChannel("A");
     written.push_back(directory / "indirect_irradiance.exr");
     image::writeExr(written.back(), irradiance);
-    const image::Image albedo = readTextureImage(device, *renderer.deferred().gbuffer().albedo);
-    image::Image indirect = image::Image::rgb(irradiance.width(), irradiance.height());
-    for (const char* c : {"R", "G", "B"}) {
-        const auto e = irradiance.channel(c);
-        const auto a = albedo.channel(c);
-        const auto out = indirect.channel(c);
-        for (size_t i = 0; i < out.size(); ++i) {
-            out[i] = renderer.indirectScale() * e[i] * a[i];
-        }
-    }
+    const image::Image indirect =
+        indirectRadiance(irradiance, readTextureImage(device, *renderer.deferred().gbuffer().albedo),
+                         renderer.indirectScale());
     written.push_back(directory / "indirect.exr");
     image::writeExr(written.back(), indirect);
     written.push_back(directory / "indirect.png");

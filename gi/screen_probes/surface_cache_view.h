@@ -19,7 +19,8 @@ struct SurfaceCacheView {
     rhi::TextureHandle finalLighting; // RGBA16F Texture2D atlas: outgoing radiance, a = 1 where captured
     rhi::BufferHandle cards;          // StructuredBuffer<SurfaceCard>
     rhi::BufferHandle cardBvh;        // StructuredBuffer<CardBvhNode> over those cards
-    rhi::TextureHandle voxelLighting; // RGBA16F 3D over voxelGrid: rgb mean radiance, a = coverage
+    rhi::TextureHandle voxelLighting; // RGBA16F 3D over voxelGrid, LUMINA_VOXEL_FACES face columns
+                                      // side by side along x: rgb mean radiance, a = coverage
     gpu::VoxelGridInfo voxelGrid{};
 };
 

@@ -5,9 +5,9 @@
 // - the caller's (RGBA16F over the world box voxelMin..voxelMax: rgb radiance leaving the surfaces
 //   in a voxel premultiplied by a, its occupancy): the trilinear sample divided by its alpha, so
 //   empty neighbour voxels do not darken a surface;
-// - the surface cache's (LUMINA_SP_FLAG_VOXEL_GRID: rgb mean radiance, a coverage):
-//   coverage-weighted and leaning along -normal, since a cone hit stops in front of its surface, in
-//   empty voxels (coneHitVoxelRadiance).
+// - the surface cache's (LUMINA_SP_FLAG_VOXEL_GRID: rgb mean radiance, a coverage, one column per
+//   face direction): the faces of the hit normal, coverage-weighted and leaning along -normal,
+//   since a cone hit stops in front of its surface, in empty voxels (coneHitVoxelRadiance).
 // Hits outside the volume, or with no volume given, are black: nothing is known about their light.
 // One group per probe; thread t shades rays t, t + 64, ...
 #include "screen_probes/screen_probe_common.hlsli"

@@ -2,6 +2,7 @@
 // indirect term of the real-time techniques.
 #include "gi/bench/reference_cache.h"
 #include "gi/bench/technique_runs.h"
+#include "gi/frame/indirect_term.h"
 #include "gi/scene/scene_loader.h"
 
 #include <gtest/gtest.h>
