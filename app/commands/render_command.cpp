@@ -87,6 +87,13 @@ int runRender(const ParsedArgs& args) {
         loaded.image = {args.common.size->width, args.common.size->height};
     }
     const std::filesystem::path out = args.common.out.empty() ? loaded.name + ".png" : args.common.out;
+    // A name ending in .exr asks for the linear image; writing a PNG under that name (as this
+    // once did) leaves a file every EXR reader rejects.
+    const bool outIsExr = out.extension() == ".exr";
+    if (!outIsExr && out.extension() != ".png") {
+        throw UsageError("--out " + out.string() +
+                         ": the image is written as .png (display) or .exr (linear HDR)");
+    }
     // Before the frames, not after them: a lumen render runs for minutes on a CPU device, and
     // an output folder that does not exist yet should not cost them.
     for (const std::filesystem::path& file : {out, std::filesystem::path(args.get("exr"))}) {
@@ -156,13 +163,21 @@ int runRender(const ParsedArgs& args) {
                   << ")\n";
     }
 
-    image::writeDisplayPng(out, gi::displayImage(gi::readTextureImage(*device, *renderer.deferred().ldr())));
-    std::cout << "wrote " << out.string() << '\n';
-    if (args.has("exr")) {
+    const auto writeHdr = [&](const std::filesystem::path& path) {
         image::Image hdr = gi::readTextureImage(*device, *renderer.deferred().hdr());
         hdr.removeChannel("A");
-        image::writeExr(args.get("exr"), hdr);
-        std::cout << "wrote " << args.get("exr") << " (linear HDR radiance)\n";
+        image::writeExr(path, hdr);
+        std::cout << "wrote " << path.string() << " (linear HDR radiance)\n";
+    };
+    if (outIsExr) {
+        writeHdr(out);
+    } else {
+        image::writeDisplayPng(out,
+                               gi::displayImage(gi::readTextureImage(*device, *renderer.deferred().ldr())));
+        std::cout << "wrote " << out.string() << '\n';
+    }
+    if (args.has("exr")) {
+        writeHdr(args.get("exr"));
     }
     if (args.has("dump-buffers")) {
         const auto written =
@@ -206,7 +221,8 @@ Command renderCommand() {
             "technique (the default) the scene's SDFs, the surface cache with multi-bounce radiosity "
             "(docs/surface_cache.md) and the screen-probe final gather (docs/screen_probes.md) add "
             "indirect light; the composite (direct + indirect x albedo) is tonemapped and written as PNG "
-            "(default <scene>.png). The technique and preset come from the flags, else the scene file, "
+            "(default <scene>.png), or kept linear when --out names an .exr. The technique and preset come "
+            "from the flags, else the scene file, "
             "else lumen and medium (docs/gi.md lists what each preset sets). Without --frames, lumen runs "
             "until the surface cache converges and the probes settle (progress on stderr), direct one "
             "frame (60 with --timings). --exr writes the linear HDR radiance; --dump-buffers writes every "

@@ -14,7 +14,11 @@ struct ScreenProbeSettings {
                                    // every direction stays reachable (0 < floor <= 1)
 
     float maxTraceDistance = 0.0f; // world units; 0: the global SDF grid's diagonal
-    float coneHalfAngle = 0.1f;    // radians (the thesis's far-field cone)
+    // Far-field cone, radians. A cone stops where the SDF falls below its radius, so a wide one
+    // stops at every edge it passes near: with the thesis's 0.1 (50 mm wide at 500 mm in the Cornell
+    // box) the blocks' edges shadowed half the floor's rays to the light (floor at 55% of the
+    // path tracer's, 77% with 0.02; docs/screen_probes.md).
+    float coneHalfAngle = 0.02f;
     float originBiasVoxels = 2.0f; // rays start this many global SDF voxels off the surface, along its normal
     // Rays are traced through the mesh SDFs (reading the surface cache at hits) up to this distance
     // and through the global SDF beyond. World units; 0: no near field; unset:
@@ -29,7 +33,7 @@ struct ScreenProbeSettings {
     static constexpr float kNearFieldGridFraction = 0.25f;
 
     float probeHistoryBlend = 0.1f;      // weight of the new frame in the probe radiance history
-    float outlierClamp = 2.0f;           // new radiance clamped to this x the probe's history luminance
+    float outlierClamp = 4.0f;           // new radiance clamped to this x the probe's brightest history texel
     float historyPlaneTolerance = 0.02f; // history kept while the old probe lies this close (x view depth)
                                          // to the new one's plane
     float historyNormalTolerance = 0.9f; // ... and their normals' cosine is at least this

@@ -3,8 +3,11 @@
 // Each card's instance is drawn orthographically along the card's normal, its world-to-card map
 // as the projection and its atlas rectangle as the viewport, writing albedo, world normal and
 // material in one multi-render-target pass; a full-rectangle draw first resets the texels and
-// the depth. Cards never share texels, so one atlas-sized depth buffer serves every card and
-// needs no clear of its own.
+// the depth. Then the other instances whose bounds meet the card's are drawn depth-tested, not
+// depth-written ("card occluders"), resetting the texels they hide within the card's slab: what
+// another surface covers along the card's normal is seen by nobody from that side, and left in,
+// it dimmed whatever covered it in the voxel lighting. Cards never share texels, so one
+// atlas-sized depth buffer serves every card and needs no clear of its own.
 #include "gi/core/frame_context.h"
 #include "gi/gpu_scene/gpu_scene.h"
 #include "gi/scene/scene.h"

@@ -132,11 +132,33 @@ void SurfaceCards::moveInstance(uint32_t instance, const glm::mat4& transform,
     // Placed on a copy and committed at the end: a move that does not fit (or a singular
     // transform) throws and leaves every card and the atlas as they were.
     SurfaceCards next = *this;
-    for (uint32_t card = instanceFirst_[instance]; card < instanceFirst_[instance + 1]; ++card) {
+    const uint32_t first = instanceFirst_[instance], end = instanceFirst_[instance + 1];
+    for (uint32_t card = first; card < end; ++card) {
         const gpu::SurfaceCard& c = next.cards_[card];
         const uint32_t keep = gpu::asuint(c.boundsMinAndFlags.w) & LUMINA_CARD_VISIBLE;
         next.place(card, meshCards_[c.info.x][c.info.y], transform, lights,
                    keep | LUMINA_CARD_DIRTY | LUMINA_CARD_DYNAMIC);
+    }
+    // The capture clears the texels another instance hides (card_capture_pass.h): the cards
+    // the instance overlapped before or after the move are captured again.
+    const auto overlaps = [](const gpu::SurfaceCard& a, const gpu::SurfaceCard& b) {
+        return glm::all(
+                   glm::lessThanEqual(glm::vec3(a.boundsMinAndFlags), glm::vec3(b.boundsMaxAndInstance))) &&
+               glm::all(
+                   glm::lessThanEqual(glm::vec3(b.boundsMinAndFlags), glm::vec3(a.boundsMaxAndInstance)));
+    };
+    for (uint32_t card = 0; card < next.cards_.size(); ++card) {
+        if (card >= first && card < end) {
+            continue;
+        }
+        gpu::SurfaceCard& other = next.cards_[card];
+        for (uint32_t moved = first; moved < end; ++moved) {
+            if (overlaps(other, cards_[moved]) || overlaps(other, next.cards_[moved])) {
+                other.boundsMinAndFlags.w =
+                    gpu::asfloat(gpu::asuint(other.boundsMinAndFlags.w) | LUMINA_CARD_DIRTY);
+                break;
+            }
+        }
     }
     *this = std::move(next);
 }

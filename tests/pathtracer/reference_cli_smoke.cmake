@@ -8,22 +8,7 @@ endforeach()
 file(REMOVE_RECURSE "${DIR}")
 file(MAKE_DIRECTORY "${DIR}")
 
-# run(<expected exit code> <name> args...): runs lumina, leaves its output in OUT and ERR.
-function(run expected name)
-  execute_process(COMMAND "${LUMINA}" ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  message(STATUS "[${name}] lumina ${ARGN} -> ${rc}\n${out}${err}")
-  if(NOT rc EQUAL expected)
-    message(FATAL_ERROR "[${name}] exit code ${rc}, expected ${expected}")
-  endif()
-  set(OUT "${out}" PARENT_SCOPE)
-  set(ERR "${err}" PARENT_SCOPE)
-endfunction()
-
-function(expect_match name text regex)
-  if(NOT text MATCHES "${regex}")
-    message(FATAL_ERROR "[${name}] output does not match '${regex}'")
-  endif()
-endfunction()
+include("${CMAKE_CURRENT_LIST_DIR}/../cli_smoke.cmake")
 
 set(num "[0-9]+(\\.[0-9]+)?(e[-+][0-9]+)?")
 

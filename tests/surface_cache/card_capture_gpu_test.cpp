@@ -242,10 +242,42 @@ TEST_P(SurfaceCacheCaptureGpu, CapturesTheCornellBox) {
         // Quads fill their cards up to the slant of their published corners; the blocks' tops,
         // turned 17 degrees in their axis-aligned cards, about two thirds.
         EXPECT_GT(coverage, 0.5f) << cards.describe(c);
-        // Only the card's own instance is drawn (the ceiling's card does not see the light
-        // quad 0.1 mm below it, which has a card of its own).
+        // Only the card's own instance is captured (the light quad 0.1 mm below the ceiling has
+        // a card of its own).
         EXPECT_EQ(own[c], covered[c]) << cards.describe(c);
     }
+
+    // ... but other instances hide what they cover within its slab: the ceiling's down-facing
+    // card is empty where the light hangs under it, and captured around it.
+    const auto instanceNamed = [&](const std::string& name) {
+        for (uint32_t i = 0; i < scene.instances.size(); ++i) {
+            if (scene.instances[i].name == name) {
+                return i;
+            }
+        }
+        throw std::runtime_error("no instance " + name);
+    };
+    const uint32_t ceiling = instanceNamed("ceiling");
+    const auto texelOf = [&](const gpu::SurfaceCard& card, glm::vec3 world) {
+        const glm::vec4 p(world, 1.0f);
+        const glm::vec2 uv(glm::dot(card.worldToCard0, p), glm::dot(card.worldToCard1, p));
+        return glm::uvec2(glm::vec2(card.atlasRect.x, card.atlasRect.y) +
+                          uv * glm::vec2(card.atlasRect.z, card.atlasRect.w));
+    };
+    int downCards = 0;
+    for (uint32_t c = 0; c < cards.cards().size(); ++c) {
+        const gpu::SurfaceCard& card = cards.cards()[c];
+        if (cards.instanceOf(c) != ceiling || card.normalAndPadding.y > -0.9f) {
+            continue;
+        }
+        ++downCards;
+        const glm::uvec2 underLight = texelOf(card, {278.0f, 548.8f, 279.5f});
+        const glm::uvec2 beside = texelOf(card, {278.0f, 548.8f, 400.0f});
+        EXPECT_EQ(images.at(underLight.x, underLight.y).albedo.a, 0.0f)
+            << "hidden by the light: " << cards.describe(c);
+        EXPECT_EQ(images.at(beside.x, beside.y).albedo.a, 1.0f) << "beside the light: " << cards.describe(c);
+    }
+    EXPECT_EQ(downCards, 1);
 }
 
 TEST_P(SurfaceCacheCaptureGpu, ACardOutsideTheAtlasIsRefused) {

@@ -1,7 +1,7 @@
 // SurfaceCards under random instance moves in a small atlas: cards follow their instances,
 // atlas rectangles never overlap and always match the allocator's owner map, a crowded atlas is
 // defragmented (moving other cards, which become DIRTY), and a move that cannot fit changes
-// nothing.
+// nothing. A move recaptures the other cards the instance covered or now covers.
 #include "gi/scene/mesh_builder.h"
 #include "gi/surface_cache/surface_cards.h"
 
@@ -126,6 +126,24 @@ TEST(SurfaceCacheCards, SingularMoveThrowsAndChangesNothing) {
                  std::invalid_argument);
     EXPECT_TRUE(sameCards(before, cards.cards()));
     EXPECT_THROW(cards.moveInstance(kInstances, glm::mat4(1.0f), scene.lights), std::out_of_range);
+}
+
+// A card's capture clears what other instances hide of it, so a move recaptures the cards the
+// instance overlapped before and after it, and no others.
+TEST(SurfaceCacheCards, AMoveRecapturesTheCardsTheInstanceCoveredOrNowCovers) {
+    const scene::Scene scene = quads();
+    SurfaceCards cards(scene);
+    const auto dirtyAfter = [&](uint32_t instance, glm::vec3 to) {
+        for (uint32_t c = 0; c < cards.cards().size(); ++c) {
+            cards.markCaptured(c, 0);
+        }
+        cards.moveInstance(instance, glm::translate(glm::mat4(1.0f), to), scene.lights);
+        return cards.dirtyCards();
+    };
+    // Quad 0 onto quad 1 (hovering just above it), then far away, then further still.
+    EXPECT_EQ(dirtyAfter(0, {10.0f, 0.001f, 0.0f}), (std::vector<uint32_t>{0, 1}));
+    EXPECT_EQ(dirtyAfter(0, {200.0f, 0.0f, 0.0f}), (std::vector<uint32_t>{0, 1}));
+    EXPECT_EQ(dirtyAfter(0, {300.0f, 0.0f, 0.0f}), (std::vector<uint32_t>{0}));
 }
 
 } // namespace

@@ -1,0 +1,22 @@
+# `lumina render` output names, end to end: cmake -DLUMINA=... -DDIR=... -P this.
+# --out picks the format from its extension: .png the display image, .exr the linear one (which
+# `lumina compare` must read back); any other extension is a usage error (exit 2) before rendering.
+foreach(var LUMINA DIR)
+  if(NOT DEFINED ${var})
+    message(FATAL_ERROR "render_cli_smoke: -D${var}= is required")
+  endif()
+endforeach()
+file(REMOVE_RECURSE "${DIR}")
+file(MAKE_DIRECTORY "${DIR}")
+
+include("${CMAKE_CURRENT_LIST_DIR}/../cli_smoke.cmake")
+
+run(0 exr render cornell_box_point --technique direct --size 16x16 --frames 1 --validation --out "${DIR}/a/linear.exr")
+expect_match(exr "${OUT}" "linear.exr \\(linear HDR radiance\\)")
+run(0 exr-reads-back compare "${DIR}/a/linear.exr" "${DIR}/a/linear.exr")
+
+run(2 bad-extension render cornell_box_point --technique direct --size 16x16 --frames 1 --out "${DIR}/image.jpg")
+expect_match(bad-extension "${ERR}" "image.jpg: the image is written as .png \\(display\\) or .exr \\(linear HDR\\)")
+if(EXISTS "${DIR}/image.jpg")
+  message(FATAL_ERROR "[bad-extension] a file was written")
+endif()
