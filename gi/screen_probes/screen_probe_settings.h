@@ -33,7 +33,7 @@ struct ScreenProbeSettings {
     static constexpr float kNearFieldGridFraction = 0.25f;
 
     float probeHistoryBlend = 0.1f;      // weight of the new frame in the probe radiance history
-    float outlierClamp = 4.0f;           // new radiance clamped to this x the probe's brightest history texel
+    float outlierClamp = 4.0f;           // new radiance clamped to this x max(texel history, probe's mean)
     float historyPlaneTolerance = 0.02f; // history kept while the old probe lies this close (x view depth)
                                          // to the new one's plane
     float historyNormalTolerance = 0.9f; // ... and their normals' cosine is at least this

@@ -4,13 +4,13 @@
 // Numerator and denominator of each texel's weighted mean are blended exponentially,
 //     W' = (1 - a) W + a w,   L' = ((1 - a) W L + a w x) / W'   (a = temporal.x, about 10% new),
 // so early frames average like a running mean and texels no ray reached keep their radiance. A new
-// value brighter than temporal.y x max(its history, the probe's brightest history texel) is scaled
-// down to that (a single bright ray must not linger for ten frames). Not the texel's history alone,
-// nor the probe's mean: a light smaller than a texel is a legitimate outlier of its own texel every
-// frame a ray hits it (a texel a quarter covered reads 4x its mean), and clamping against either
-// took 30% of the Cornell box floor's light (docs/screen_probes.md). L' is a convex combination of inputs, so
-// accumulation never exceeds the largest input; non-finite results are written as empty texels,
-// so NaN and Inf never enter history. One group per probe, one thread per texel.
+// value brighter than temporal.y x max(its history, the probe's mean history) is scaled down to that
+// (a single bright ray must not linger for ten frames). The factor trades bias for steadiness: a
+// light smaller than a texel reads several times its texel's mean every frame a ray hits it, so
+// 2 took a quarter of the Cornell box floor's light; clamping against the probe's brightest texel
+// instead kept all of it but let the image flicker ten times more (docs/screen_probes.md). L' is
+// a convex combination of inputs, so accumulation never exceeds the largest input; non-finite
+// results are written as empty texels, so NaN and Inf never enter history. One group per probe, one thread per texel.
 #include "screen_probes/screen_probe_common.hlsli"
 
 StructuredBuffer<ScreenProbe> gProbes : register(t0);
@@ -21,6 +21,7 @@ RWStructuredBuffer<float4> gHistory : register(u0);
 #include "screen_probes/probe_history.hlsli"
 
 groupshared float gsLuminance[LUMINA_SP_PROBE_TEXELS];
+groupshared float gsSolidAngle[LUMINA_SP_PROBE_TEXELS];
 
 [numthreads(LUMINA_SP_PROBE_TEXELS, 1, 1)] void main(uint3 group : SV_GroupID, uint t : SV_GroupIndex) {
     const uint probe = probeIndexOfGroup(group);
@@ -30,20 +31,25 @@ groupshared float gsLuminance[LUMINA_SP_PROBE_TEXELS];
     const ScreenProbe current = gProbes[probe];
     const ProbeFrame frame = probeFrame(current.normal.xyz);
     const float4 history = historyTexel(current, frame, t);
-    gsLuminance[t] = history.a > 0.0 ? luminance(history.rgb) : 0.0;
+    const float solidAngle = texelSolidAngle(t);
+    gsLuminance[t] = history.a > 0.0 ? luminance(history.rgb) * solidAngle : 0.0;
+    gsSolidAngle[t] = history.a > 0.0 ? solidAngle : 0.0;
     GroupMemoryBarrierWithGroupSync();
-    float brightest = 0.0;
+    float meanLuminance = 0.0;
+    float covered = 0.0;
     for (uint i = 0u; i < LUMINA_SP_PROBE_TEXELS; ++i) {
-        brightest = max(brightest, gsLuminance[i]);
+        meanLuminance += gsLuminance[i];
+        covered += gsSolidAngle[i];
     }
+    meanLuminance = covered > 0.0 ? meanLuminance / covered : 0.0;
 
     float4 x = gFrameRadiance[probe * LUMINA_SP_PROBE_TEXELS + t];
     if (!allFinite3(x.rgb) || !(x.a >= 0.0) || isinf(x.a)) {
         x = float4(0.0, 0.0, 0.0, 0.0);
     }
-    // Outlier clamp: relative to the brightest light the probe has seen (its own texel's history is
-    // among it); a probe with no (or black) history has nothing to call an outlier against.
-    const float limit = gSp.temporal.y * brightest;
+    // Outlier clamp: relative to the probe's own light level; a probe with no (or black) history
+    // has nothing to call an outlier against.
+    const float limit = gSp.temporal.y * max(history.a > 0.0 ? luminance(history.rgb) : 0.0, meanLuminance);
     const float l = luminance(x.rgb);
     if (limit > 0.0 && l > limit) {
         x.rgb *= limit / l;
