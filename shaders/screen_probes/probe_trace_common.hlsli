@@ -6,12 +6,14 @@
 #include "sdf/sdf_scene_bindings.hlsli"
 #include "screen_probes/screen_probe_common.hlsli"
 
+#define LUMINA_SP_ORIGIN_PUSH_STEPS 4u
+
 StructuredBuffer<ScreenProbe> gProbes : register(t6);
 StructuredBuffer<ProbeRay> gRays : register(t7);
 
 // The probe a per-probe group traces for and the origin of its rays: its position lifted off the
 // surface along its normal by the origin bias (the global SDF is coarse: starting on the surface
-// would hit it at once), the same for both fields. False when the group has no valid probe (sky).
+// would hit it at once), then out of any other surface's shell, the same for both fields. False when the group has no valid probe (sky).
 bool tracedProbe(uint3 group, out uint probe, out float3 origin) {
     probe = probeIndexOfGroup(group);
     origin = float3(0.0, 0.0, 0.0);
@@ -20,6 +22,19 @@ bool tracedProbe(uint3 group, out uint probe, out float3 origin) {
     }
     const ScreenProbe p = gProbes[probe];
     origin = p.positionAndDepth.xyz + p.normal.xyz * gSp.trace.z;
+    // A probe in a corner (a wall meeting the floor) lifted along its own normal can stay within
+    // the other surface's SDF shell, where every ray hits at t = 0 and reads whichever card the
+    // gradient there names: in the open-top box, the sunlit outside of the wall, a bright "+" in
+    // the image where the spatial filter spread that probe. So the origin is pushed out along the
+    // global SDF's gradient until it lies half the lift clear of every surface.
+    const float clearance = 0.5 * gSp.trace.z;
+    for (uint step = 0u; step < LUMINA_SP_ORIGIN_PUSH_STEPS; ++step) {
+        const float distance = sdfSampleGlobal(origin);
+        if (distance >= clearance) {
+            break;
+        }
+        origin += sdfGlobalNormal(origin) * (clearance - distance);
+    }
     return true;
 }
 
