@@ -26,7 +26,9 @@ bool tracedProbe(uint3 group, out uint probe, out float3 origin) {
     // the other surface's SDF shell, where every ray hits at t = 0 and reads whichever card the
     // gradient there names: in the open-top box, the sunlit outside of the wall, a bright "+" in
     // the image where the spatial filter spread that probe. So the origin is pushed out along the
-    // global SDF's gradient until it lies half the lift clear of every surface.
+    // global SDF's gradient until it lies half the lift clear of every surface. Where three
+    // zero-thickness quads meet within a global voxel (the open-top box's room corners) that
+    // gradient can point out of the room, and the push leaves the room (docs/gi.md, defects).
     const float clearance = 0.5 * gSp.trace.z;
     for (uint step = 0u; step < LUMINA_SP_ORIGIN_PUSH_STEPS; ++step) {
         const float distance = sdfSampleGlobal(origin);
