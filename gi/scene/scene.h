@@ -34,6 +34,10 @@ struct Bounds {
     }
     glm::vec3 centre() const { return (min + max) * 0.5f; }
     glm::vec3 size() const { return empty() ? glm::vec3(0.0f) : max - min; }
+    // Closed boxes that share a point overlap; an empty box overlaps nothing.
+    bool overlaps(const Bounds& other) const {
+        return glm::all(glm::lessThanEqual(min, other.max)) && glm::all(glm::lessThanEqual(other.min, max));
+    }
 };
 
 // The bounds of `local` after `transform`: its eight corners transformed (conservative).

@@ -1,9 +1,8 @@
 #include "gi/surface_cache/card_capture_pass.h"
 
+#include "gi/surface_cache/surface_cards.h"
 #include "shaders/surface_cache/card_capture_shared.h"
 
-#include <glm/glm.hpp>
-#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -13,30 +12,16 @@ namespace {
 constexpr const char* kPassName = "surface cache: card capture";
 constexpr const char* kOccluderPassName = "surface cache: card occluders";
 
-struct Box {
-    glm::vec3 min{std::numeric_limits<float>::max()};
-    glm::vec3 max{std::numeric_limits<float>::lowest()};
-    bool overlaps(const Box& o) const {
-        return glm::all(glm::lessThanEqual(min, o.max)) && glm::all(glm::lessThanEqual(o.min, max));
-    }
-};
-
-Box cardBox(const gpu::SurfaceCard& card) {
-    return {glm::vec3(card.boundsMinAndFlags), glm::vec3(card.boundsMaxAndInstance)};
-}
-
 // Each instance's world box: the union of its cards' padded bounds, current after moves.
-std::vector<Box> instanceBoxes(std::span<const gpu::SurfaceCard> cards, size_t instanceCount) {
-    std::vector<Box> boxes(instanceCount);
+std::vector<scene::Bounds> instanceBounds(std::span<const gpu::SurfaceCard> cards, size_t instanceCount) {
+    std::vector<scene::Bounds> bounds(instanceCount);
     for (const gpu::SurfaceCard& card : cards) {
         const uint32_t instance = gpu::asuint(card.boundsMaxAndInstance.w);
         if (instance < instanceCount) {
-            const Box b = cardBox(card);
-            boxes[instance].min = glm::min(boxes[instance].min, b.min);
-            boxes[instance].max = glm::max(boxes[instance].max, b.max);
+            bounds[instance].extend(cardBounds(card));
         }
     }
-    return boxes;
+    return bounds;
 }
 
 } // namespace
@@ -68,7 +53,7 @@ void CardCapturePass::record(gi::FrameContext& frame, const SurfaceCacheAtlas& a
     // writing depth, clearing every texel they cover in front of the card's surface.
     gi::RasterPipelineState occluderState = captureState;
     occluderState.depth.writeEnable = false;
-    const std::vector<Box> instanceBox = instanceBoxes(cards, instanceDraws_.size());
+    const std::vector<scene::Bounds> instanceBox = instanceBounds(cards, instanceDraws_.size());
     const AtlasLayerView albedo = atlas.layer(AtlasLayer::Albedo);
     const AtlasLayerView normal = atlas.layer(AtlasLayer::Normal);
     const AtlasLayerView material = atlas.layer(AtlasLayer::Material);
@@ -140,7 +125,7 @@ void CardCapturePass::record(gi::FrameContext& frame, const SurfaceCacheAtlas& a
         // light's voxels and dimmed it to 65% in the voxel lighting (docs/surface_cache.md).
         std::vector<gi::RasterDraw> occluders;
         for (uint32_t other = 0; other < instanceDraws_.size(); ++other) {
-            if (other == instance || !instanceBox[other].overlaps(cardBox(card))) {
+            if (other == instance || !instanceBox[other].overlaps(cardBounds(card))) {
                 continue;
             }
             for (const gi::SceneDraw& draw : instanceDraws_[other]) {

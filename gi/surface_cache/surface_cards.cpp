@@ -141,19 +141,15 @@ void SurfaceCards::moveInstance(uint32_t instance, const glm::mat4& transform,
     }
     // The capture clears the texels another instance hides (card_capture_pass.h): the cards
     // the instance overlapped before or after the move are captured again.
-    const auto overlaps = [](const gpu::SurfaceCard& a, const gpu::SurfaceCard& b) {
-        return glm::all(
-                   glm::lessThanEqual(glm::vec3(a.boundsMinAndFlags), glm::vec3(b.boundsMaxAndInstance))) &&
-               glm::all(
-                   glm::lessThanEqual(glm::vec3(b.boundsMinAndFlags), glm::vec3(a.boundsMaxAndInstance)));
-    };
     for (uint32_t card = 0; card < next.cards_.size(); ++card) {
         if (card >= first && card < end) {
             continue;
         }
         gpu::SurfaceCard& other = next.cards_[card];
+        const scene::Bounds bounds = cardBounds(other);
         for (uint32_t moved = first; moved < end; ++moved) {
-            if (overlaps(other, cards_[moved]) || overlaps(other, next.cards_[moved])) {
+            if (bounds.overlaps(cardBounds(cards_[moved])) ||
+                bounds.overlaps(cardBounds(next.cards_[moved]))) {
                 other.boundsMinAndFlags.w =
                     gpu::asfloat(gpu::asuint(other.boundsMinAndFlags.w) | LUMINA_CARD_DIRTY);
                 break;

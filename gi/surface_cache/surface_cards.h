@@ -66,4 +66,9 @@ private:
 
 const char* axisName(uint32_t axis); // "+X" ... "-Z"
 
+// A card's world bounds, padded as placed.
+inline scene::Bounds cardBounds(const gpu::SurfaceCard& card) {
+    return {glm::vec3(card.boundsMinAndFlags), glm::vec3(card.boundsMaxAndInstance)};
+}
+
 } // namespace lumina::surface_cache

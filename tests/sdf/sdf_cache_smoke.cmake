@@ -9,23 +9,11 @@ endforeach()
 file(REMOVE_RECURSE "${DIR}")
 file(MAKE_DIRECTORY "${DIR}")
 
-function(run name)
-  execute_process(COMMAND ${CMAKE_COMMAND} -E env "LUMINA_CACHE_DIR=${DIR}" "${LUMINA}" ${ARGN}
-    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  message(STATUS "[${name}] lumina ${ARGN} -> ${rc}\n${out}${err}")
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "[${name}] exit code ${rc}")
-  endif()
-  set(OUT "${out}" PARENT_SCOPE)
-endfunction()
+# One fresh cache for every run: lumina reads LUMINA_CACHE_DIR from its environment.
+set(ENV{LUMINA_CACHE_DIR} "${DIR}")
+include("${CMAKE_CURRENT_LIST_DIR}/../cli_smoke.cmake")
 
-function(expect_match name text regex)
-  if(NOT text MATCHES "${regex}")
-    message(FATAL_ERROR "[${name}] output does not match '${regex}'")
-  endif()
-endfunction()
-
-run(first sdf cornell_box --resolution 16 --build-only)
+run(0 first sdf cornell_box --resolution 16 --build-only)
 expect_match(first "${OUT}" "mesh SDFs: 8 meshes, 8 built \\([1-9][0-9]* voxels\\), 0 loaded from cache \\(0 voxels\\)")
 file(GLOB cached "${DIR}/sdf/*.lsdf")
 list(LENGTH cached count)
@@ -33,11 +21,11 @@ if(NOT count EQUAL 8)
   message(FATAL_ERROR "[first] ${count} cache files in ${DIR}/sdf, expected 8")
 endif()
 
-run(second sdf cornell_box --resolution 16 --build-only)
+run(0 second sdf cornell_box --resolution 16 --build-only)
 expect_match(second "${OUT}" "mesh SDFs: 8 meshes, 0 built \\(0 voxels\\), 8 loaded from cache \\([1-9][0-9]* voxels\\)")
 expect_match(second "${OUT}" "loaded from cache, 0 voxels built")
 
 # Another resolution is another cache key: built again.
-run(third sdf cornell_box --resolution 20 --build-only)
+run(0 third sdf cornell_box --resolution 20 --build-only)
 expect_match(third "${OUT}" "8 built")
 file(REMOVE_RECURSE "${DIR}")
