@@ -10,7 +10,8 @@
 // 2 took a quarter of the Cornell box floor's light; clamping against the probe's brightest texel
 // instead kept all of it but let the image flicker ten times more (docs/screen_probes.md). L' is
 // a convex combination of inputs, so accumulation never exceeds the largest input; non-finite
-// results are written as empty texels, so NaN and Inf never enter history. One group per probe, one thread per texel.
+// results are written as empty texels, so NaN and Inf never enter history. One group per probe,
+// one thread per texel.
 #include "screen_probes/screen_probe_common.hlsli"
 
 StructuredBuffer<ScreenProbe> gProbes : register(t0);

@@ -11,17 +11,11 @@
 StructuredBuffer<ScreenProbe> gProbes : register(t6);
 StructuredBuffer<ProbeRay> gRays : register(t7);
 
-// The probe a per-probe group traces for and the origin of its rays: its position lifted off the
-// surface along its normal by the origin bias (the global SDF is coarse: starting on the surface
-// would hit it at once), then out of any other surface's shell, the same for both fields. False when the group has no valid probe (sky).
-bool tracedProbe(uint3 group, out uint probe, out float3 origin) {
-    probe = probeIndexOfGroup(group);
-    origin = float3(0.0, 0.0, 0.0);
-    if (probe >= gSp.grid.w || !probeIsValid(gProbes[probe])) {
-        return false;
-    }
-    const ScreenProbe p = gProbes[probe];
-    origin = p.positionAndDepth.xyz + p.normal.xyz * gSp.trace.z;
+// Where a probe's rays start: its position lifted off the surface along its normal by the origin
+// bias (the global SDF is coarse: starting on the surface would hit it at once), then out of any
+// other surface's shell.
+float3 probeRayOrigin(ScreenProbe p) {
+    float3 origin = p.positionAndDepth.xyz + p.normal.xyz * gSp.trace.z;
     // A probe in a corner (a wall meeting the floor) lifted along its own normal can stay within
     // the other surface's SDF shell, where every ray hits at t = 0 and reads whichever card the
     // gradient there names: in the open-top box, the sunlit outside of the wall, a bright "+" in
@@ -37,6 +31,25 @@ bool tracedProbe(uint3 group, out uint probe, out float3 origin) {
         }
         origin += sdfGlobalNormal(origin) * (clearance - distance);
     }
+    return origin;
+}
+
+groupshared float3 gsRayOrigin;
+
+// The probe a per-probe group traces for and the origin of its rays (probeRayOrigin, the same for
+// both fields), found once per group by its first thread: the push samples the global SDF up to
+// 32 times. False, for the whole group alike, when the group has no valid probe (sky).
+bool tracedProbe(uint3 group, uint thread, out uint probe, out float3 origin) {
+    probe = probeIndexOfGroup(group);
+    origin = float3(0.0, 0.0, 0.0);
+    if (probe >= gSp.grid.w || !probeIsValid(gProbes[probe])) {
+        return false;
+    }
+    if (thread == 0u) {
+        gsRayOrigin = probeRayOrigin(gProbes[probe]);
+    }
+    GroupMemoryBarrierWithGroupSync();
+    origin = gsRayOrigin;
     return true;
 }
 

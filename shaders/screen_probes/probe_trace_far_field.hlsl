@@ -14,7 +14,7 @@ RWStructuredBuffer<SdfHit> gHits : register(u0);
 [numthreads(LUMINA_SP_PROBE_TEXELS, 1, 1)] void main(uint3 group : SV_GroupID, uint t : SV_GroupIndex) {
     uint probe;
     float3 origin;
-    if (!tracedProbe(group, probe, origin)) {
+    if (!tracedProbe(group, t, probe, origin)) {
         return;
     }
     const SdfTraceParams params = sdfDefaultTraceParams(gSp.trace.x);

@@ -78,7 +78,7 @@ void traceNearField(uint ray, float3 origin) {
 [numthreads(LUMINA_SP_PROBE_TEXELS, 1, 1)] void main(uint3 group : SV_GroupID, uint t : SV_GroupIndex) {
     uint probe;
     float3 origin;
-    if (!tracedProbe(group, probe, origin)) {
+    if (!tracedProbe(group, t, probe, origin)) {
         return;
     }
     for (uint r = t; r < gSp.rays.x; r += LUMINA_SP_PROBE_TEXELS) {
