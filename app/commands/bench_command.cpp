@@ -159,12 +159,11 @@ int runBench(const ParsedArgs& args) {
                              "' (direct, lumen, pathtracer)");
         }
     }
-    // Lumen's presets take the direct presets' shadow maps: a preset must be both.
-    const bool lumen = contains(techniques, "lumen");
     for (const std::string& preset : presets) {
-        if (!contains(gi::directPresetNames(), preset) ||
-            (lumen && !contains(gi::lumenPresetNames(), preset))) {
-            throw UsageError("--presets: unknown preset '" + preset + "' (low, medium, high)");
+        try {
+            gi::findPreset(preset);
+        } catch (const std::invalid_argument& e) {
+            throw UsageError(std::string("--presets: ") + e.what());
         }
     }
     const uint32_t width = args.common.size ? args.common.size->width : kDefaultSize;

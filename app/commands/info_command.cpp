@@ -1,9 +1,11 @@
 // `lumina info SCENE`: loads a scene (a built-in's name or a path) and prints what it holds:
 // counts, bounds, camera, units, lights and every repair the loader made. Needs no GPU.
 #include "app/command.h"
+#include "gi/frame/gi_technique.h"
 #include "gi/scene/builtin_scenes.h"
 #include "gi/scene/generators/generators.h"
 #include "gi/scene/scene_loader.h"
+#include "gi/surface_cache/surface_cards.h"
 
 #include <chrono>
 #include <cstdio>
@@ -52,6 +54,20 @@ std::string lightLine(const scene::Light& light) {
         line += ", range " + format(light.range);
     }
     return line;
+}
+
+// The surface cache lumen would build for the scene camera's view (CPU only): atlas occupancy
+// and the cards at each level of detail.
+void printSurfaceCache(const scene::Scene& loaded, const std::string& presetName) {
+    gi::LumenSettings lumen;
+    try {
+        lumen = gi::lumenPreset(presetName, loaded);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+    }
+    const surface_cache::SurfaceCards cards(loaded, lumen.cache);
+    printRow("surface cache", "preset " + presetName + ", atlas " + std::to_string(lumen.cache.atlasSize) +
+                                  "^2 from the camera: " + surface_cache::toString(cards.occupancy()));
 }
 
 int runInfo(const ParsedArgs& args) {
@@ -121,6 +137,7 @@ int runInfo(const ParsedArgs& args) {
     printRow("technique", loaded.technique.empty() ? "(renderer default)" : loaded.technique);
     printRow("preset", loaded.preset.empty() ? "(renderer default)" : loaded.preset);
     printRow("load time", format(milliseconds) + " ms");
+    printSurfaceCache(loaded, args.get("preset", loaded.preset.empty() ? gi::kDefaultPreset : loaded.preset));
 
     const scene::LoadReport& report = loaded.report;
     printRow("repairs",
@@ -147,16 +164,20 @@ Command infoCommand() {
     static const std::string description =
         "Loads SCENE and prints its triangle, vertex, mesh, instance, material, texture and light counts, "
         "its "
-        "bounds, camera, units, sky, image size, GI technique and preset, the load time and every repair the "
+        "bounds, camera, units, sky, image size, GI technique and preset, the load time, the surface cache's "
+        "atlas occupancy and cards per level of detail from the scene camera, and every repair the "
         "loader made. SCENE is a built-in scene (" +
         builtins +
         ") or a path to a scene file (.json), .gltf or .glb. Bad input is an error naming the file and the "
         "problem (exit code 1). docs/scenes.md describes scene files and units.";
     return {.name = "info",
             .summary = "load a scene and print what it holds",
-            .usage = "lumina info SCENE [--instances N] [--size WxH]",
+            .usage = "lumina info SCENE [--instances N] [--size WxH] [--preset P]",
             .description = description,
-            .flags = {{"instances", "N", "building count of a generated city (default 1024)"}},
+            .flags = {{"instances", "N", "building count of a generated city (default 1024)"},
+                      {"preset", "P",
+                       "the GI preset whose surface cache to describe (low, medium, high; default the "
+                       "scene's, else medium)"}},
             .run = runInfo};
 }
 

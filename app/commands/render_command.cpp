@@ -20,6 +20,7 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <sstream>
 #include <string>
 
 namespace lumina::app {
@@ -41,14 +42,18 @@ gi::FrameRendererSettings rendererSettings(const ParsedArgs& args, const scene::
     const std::string technique =
         args.get("technique", scene.technique.empty() ? gi::kDefaultTechnique : scene.technique);
     const std::string preset = args.get("preset", scene.preset.empty() ? gi::kDefaultPreset : scene.preset);
+    const gi::Preset* shadows = nullptr;
     try {
         settings.technique = gi::parseGiTechnique(technique);
+        shadows = &gi::findPreset(preset);
         if (settings.technique == gi::GiTechnique::Lumen) {
-            settings.lumen = gi::lumenPreset(preset, scene);
-            settings.lumen->probes.probeSpacing = static_cast<uint32_t>(
-                args.getUint("probe-spacing", settings.lumen->probes.probeSpacing, 2, 64));
-            settings.lumen->probes.raysPerProbe = static_cast<uint32_t>(
-                args.getUint("rays-per-probe", settings.lumen->probes.raysPerProbe, 16, 256));
+            settings.lumen = gi::lumenPreset(*shadows, scene);
+            settings.lumen->probes.probeSpacing =
+                static_cast<uint32_t>(args.getUint("probe-spacing", settings.lumen->probes.probeSpacing,
+                                                   gi::kMinProbeSpacing, gi::kMaxProbeSpacing));
+            settings.lumen->probes.raysPerProbe =
+                static_cast<uint32_t>(args.getUint("rays-per-probe", settings.lumen->probes.raysPerProbe,
+                                                   gi::kMinRaysPerProbe, gi::kMaxRaysPerProbe));
             if (args.has("near-field-distance")) {
                 settings.lumen->probes.nearFieldDistance =
                     static_cast<float>(args.getDouble("near-field-distance", 0.0));
@@ -60,6 +65,8 @@ gi::FrameRendererSettings rendererSettings(const ParsedArgs& args, const scene::
     }
     settings.deferred = {.width = scene.image.width,
                          .height = scene.image.height,
+                         .sunShadowSize = shadows->sunShadowSize,
+                         .pointShadowSize = shadows->pointShadowSize,
                          .exposureEv = exposure,
                          .log = [](std::string_view line) { std::cout << "note: " << line << '\n'; }};
     return settings;
@@ -68,7 +75,26 @@ gi::FrameRendererSettings rendererSettings(const ParsedArgs& args, const scene::
 // Whether the lumen surface cache has settled (radiosity converged); always for direct.
 bool surfacesSettled(const gi::FrameRenderer& renderer) {
     const gi::LumenGi* lumen = renderer.lumen();
-    return lumen == nullptr || lumen->surfaceCache().radiositySchedule().converged();
+    return lumen == nullptr || lumen->surfaceCache().settled();
+}
+
+// GPU memory per subsystem, as allocated while each was built.
+void printMemory(const gi::FrameRenderer& renderer, uint64_t sceneBytes, uint64_t rendererBytes) {
+    const auto mib = [](uint64_t bytes) {
+        std::ostringstream text;
+        text << std::fixed << std::setprecision(1) << double(bytes) / (1024.0 * 1024.0) << " MiB";
+        return text.str();
+    };
+    std::cout << "GPU memory: scene " << mib(sceneBytes);
+    uint64_t gi = 0;
+    if (const gi::LumenGi* lumen = renderer.lumen()) {
+        const gi::LumenMemory m = lumen->memory();
+        gi = m.sdf + m.surfaceCache + m.screenProbes;
+        std::cout << ", SDFs " << mib(m.sdf) << ", surface cache " << mib(m.surfaceCache)
+                  << ", screen probes " << mib(m.screenProbes);
+    }
+    std::cout << ", deferred " << mib(rendererBytes - gi) << ", total " << mib(sceneBytes + rendererBytes)
+              << '\n';
 }
 
 int runRender(const ParsedArgs& args) {
@@ -129,8 +155,11 @@ int runRender(const ParsedArgs& args) {
 
     rhi::ShaderLibrary shaders(*device);
     gi::PipelineCache pipelines(*device, shaders);
+    const uint64_t baseBytes = device->allocatedMemoryBytes();
     gi::GpuScene gpuScene(*device, loaded);
+    const uint64_t sceneBytes = device->allocatedMemoryBytes();
     gi::FrameRenderer renderer(*device, loaded, gpuScene, std::move(settings));
+    printMemory(renderer, sceneBytes - baseBytes, device->allocatedMemoryBytes() - sceneBytes);
 
     gi::TimingTable table(warmup);
     rhi::CommandListHandle list = device->createCommandList();
@@ -161,6 +190,13 @@ int runRender(const ParsedArgs& args) {
                   << (settledAt ? "converged after " + std::to_string(settledAt)
                                 : std::string("not converged"))
                   << ")\n";
+        const surface_cache::SurfaceCache& cache = renderer.lumen()->surfaceCache();
+        const surface_cache::SurfaceCache::LodHistory& lod = cache.lodHistory();
+        std::cout << "surface cache: atlas " << cache.atlas().size() << "^2, "
+                  << surface_cache::toString(cache.cards().occupancy()) << '\n'
+                  << "surface cache LOD: " << lod.updates << " re-plans, " << lod.evictions
+                  << " evictions (at most " << lod.maxEvictionsPerUpdate << " in a frame), "
+                  << lod.pendingCaptures << " captures pending\n";
     }
 
     const auto writeHdr = [&](const std::filesystem::path& path) {

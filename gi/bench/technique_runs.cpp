@@ -23,15 +23,6 @@ namespace {
 // Samples timed for pathTracerMsPerSample, after one warm-up sample.
 constexpr uint32_t kCalibrationSamples = 4;
 
-const std::map<std::string, DirectPreset>& directPresets() {
-    static const std::map<std::string, DirectPreset> presets = {
-        {"low", {.sunShadowSize = 1024, .pointShadowSize = 256}},
-        {"medium", {.sunShadowSize = 2048, .pointShadowSize = 512}},
-        {"high", {.sunShadowSize = 4096, .pointShadowSize = 1024}},
-    };
-    return presets;
-}
-
 // Measures one checkpoint: the final image and the indirect term against the reference.
 Checkpoint measure(uint32_t frame, const image::Image& finalImage, const image::Image& indirect,
                    const Reference& reference, uint64_t& nonFinite) {
@@ -109,19 +100,6 @@ void checkRequest(const RunRequest& request, const Reference& reference) {
 
 } // namespace
 
-const std::vector<std::string>& directPresetNames() {
-    static const std::vector<std::string> names = {"low", "medium", "high"};
-    return names;
-}
-
-DirectPreset directPreset(const std::string& name) {
-    const auto found = directPresets().find(name);
-    if (found == directPresets().end()) {
-        throw std::invalid_argument("unknown preset '" + name + "' for technique direct (low, medium, high)");
-    }
-    return found->second;
-}
-
 std::vector<uint32_t> checkpointFrames(uint32_t frames) {
     std::vector<uint32_t> result;
     for (uint32_t f = 1; f < frames; f *= 2) {
@@ -148,7 +126,7 @@ TechniqueRun runRealTime(rhi::IDevice& device, PipelineCache& pipelines, const s
                          GiTechnique technique, const std::string& preset, const RunRequest& request,
                          const Reference& reference) {
     checkRequest(request, reference);
-    const DirectPreset shadows = directPreset(preset);
+    const Preset& shadows = findPreset(preset);
     FrameRendererSettings settings;
     settings.technique = technique;
     settings.deferred = {.width = request.width,
@@ -157,7 +135,7 @@ TechniqueRun runRealTime(rhi::IDevice& device, PipelineCache& pipelines, const s
                          .pointShadowSize = shadows.pointShadowSize,
                          .log = [](std::string_view) {}};
     if (technique == GiTechnique::Lumen) {
-        settings.lumen = lumenPreset(preset, scene);
+        settings.lumen = lumenPreset(shadows, scene);
     }
     TechniqueRun run{.technique = giTechniqueName(technique),
                      .preset = preset,
@@ -178,7 +156,7 @@ TechniqueRun runRealTime(rhi::IDevice& device, PipelineCache& pipelines, const s
                .settled =
                    [&] {
                        const LumenGi* lumen = renderer.lumen();
-                       return lumen == nullptr || lumen->surfaceCache().radiositySchedule().converged();
+                       return lumen == nullptr || lumen->surfaceCache().settled();
                    }},
               run);
     run.gpuMemoryBytes = device.allocatedMemoryBytes() - baseline;

@@ -71,17 +71,8 @@ struct RunRequest {
     uint32_t seed = 1;
 };
 
-// The shadow-map sizes of a direct-renderer preset (lumen's presets of the same name use them
-// too); std::invalid_argument naming the presets for an unknown name.
-struct DirectPreset {
-    uint32_t sunShadowSize = 2048;
-    uint32_t pointShadowSize = 512;
-};
-DirectPreset directPreset(const std::string& name);
-const std::vector<std::string>& directPresetNames();
-
 // A real-time technique (direct or lumen) through FrameRenderer. Throws std::invalid_argument
-// for an unknown preset and what LumenGi throws (a full surface-cache atlas).
+// for an unknown preset (preset.h) and what LumenGi throws.
 TechniqueRun runRealTime(rhi::IDevice& device, PipelineCache& pipelines, const scene::Scene& scene,
                          GiTechnique technique, const std::string& preset, const RunRequest& request,
                          const Reference& reference);

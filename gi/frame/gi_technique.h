@@ -5,8 +5,8 @@
 //   direct  the deferred renderer alone: no indirect light (what a user gets without GI)
 //   lumen   surface cache with surface radiosity + screen-probe final gather
 //
-//   presets low, medium (default), high: surface-cache texel density and atlas size, radiosity
-//   budget, probe spacing, rays per probe and temporal weights (lumenPreset below).
+//   presets low, medium (default), high: one table for every technique (preset.h).
+#include "gi/frame/preset.h"
 #include "gi/scene/scene.h"
 #include "gi/screen_probes/screen_probe_settings.h"
 #include "gi/sdf/scene_sdf_data.h"
@@ -22,13 +22,11 @@ namespace lumina::gi {
 enum class GiTechnique { Direct, Lumen };
 
 inline constexpr const char* kDefaultTechnique = "lumen";
-inline constexpr const char* kDefaultPreset = "medium";
 
 // "direct" or "lumen"; std::invalid_argument naming the name and the choices otherwise.
 GiTechnique parseGiTechnique(std::string_view name);
 const char* giTechniqueName(GiTechnique technique);
 std::vector<std::string> giTechniqueNames();
-std::vector<std::string> lumenPresetNames();
 
 // Everything the lumen technique is built with.
 struct LumenSettings {
@@ -38,9 +36,15 @@ struct LumenSettings {
     ScreenProbeSettings probes;
 };
 
+// Cards get their full density (Preset::cardTexelsAcross) over the scene's largest extent, or
+// over this many metres in a larger scene (a city): the LOD (surface_cards.h) coarsens what the
+// atlas cannot hold at that density, far cards first.
+inline constexpr double kCardDetailExtentMetres = 64.0;
+
 // A preset for `scene`: lengths scale with the scene's extent (the Cornell box is in
 // millimetres, the city in metres), so card texels, card padding and distances follow the
 // scene. std::invalid_argument naming the preset and the choices for an unknown name.
+LumenSettings lumenPreset(const Preset& preset, const scene::Scene& scene);
 LumenSettings lumenPreset(std::string_view preset, const scene::Scene& scene);
 
 } // namespace lumina::gi

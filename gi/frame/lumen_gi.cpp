@@ -4,13 +4,15 @@ namespace lumina::gi {
 
 LumenGi::LumenGi(rhi::IDevice& device, const scene::Scene& scene, const GpuScene& gpuScene, uint32_t width,
                  uint32_t height, const LumenSettings& settings)
-    : settings_(settings), sky_(scene.sky), sdf_(device, scene, settings.sdf),
+    : settings_(settings), sky_(scene.sky), beforeSdf_(device.allocatedMemoryBytes()),
+      sdf_(device, scene, settings.sdf), afterSdf_(device.allocatedMemoryBytes()),
       cache_(device, scene, gpuScene, sdf_, settings.cache, settings.lighting),
-      probes_(device, width, height, settings.probes) {}
+      afterCache_(device.allocatedMemoryBytes()), probes_(device, width, height, settings.probes),
+      afterProbes_(device.allocatedMemoryBytes()) {}
 
 void LumenGi::record(FrameContext& frame, const DeferredRenderer& deferred, const scene::Camera& camera) {
     sdf_.record(frame);
-    cache_.update(frame, deferred.shadowedLights());
+    cache_.update(frame, deferred.shadowedLights(), camera.position);
     // Near-field hits read their cards' final lighting, far-field hits the cache's voxel lighting
     // (no volume of its own).
     const VoxelLighting cacheVoxels{};

@@ -22,6 +22,13 @@
 
 namespace lumina::gi {
 
+// GPU memory each subsystem allocated when it was built (device allocation deltas), bytes.
+struct LumenMemory {
+    uint64_t sdf = 0;          // mesh SDF atlas, instance tables, global SDF
+    uint64_t surfaceCache = 0; // atlas layers, capture depth, voxel lighting, radiosity probes
+    uint64_t screenProbes = 0; // probe buffers and the screen-space histories
+};
+
 class LumenGi {
 public:
     // `scene` and `gpuScene` must outlive it. Builds (or loads from the cache) the mesh SDFs;
@@ -41,13 +48,22 @@ public:
     const surface_cache::SurfaceCache& surfaceCache() const { return cache_; }
     const ScreenProbeGather& screenProbes() const { return probes_; }
     const LumenSettings& settings() const { return settings_; }
+    LumenMemory memory() const {
+        return {afterSdf_ - beforeSdf_, afterCache_ - afterSdf_, afterProbes_ - afterCache_};
+    }
 
 private:
+    // The allocation marks are members between the subsystems so that members' construction
+    // order measures each one.
     LumenSettings settings_;
     glm::vec3 sky_;
+    uint64_t beforeSdf_;
     sdf::SceneSdf sdf_;
+    uint64_t afterSdf_;
     surface_cache::SurfaceCache cache_;
+    uint64_t afterCache_;
     ScreenProbeGather probes_;
+    uint64_t afterProbes_;
 };
 
 } // namespace lumina::gi

@@ -28,11 +28,15 @@ void checkRange(const char* name, float value, float lo, float hi, bool loOpen, 
 } // namespace
 
 void ScreenProbeSettings::validate() const {
-    if (probeSpacing < 2 || probeSpacing > 64) {
-        bad("probeSpacing", std::to_string(probeSpacing), "2 .. 64 pixels");
+    static_assert(kMaxRaysPerProbe == LUMINA_SP_MAX_RAYS);
+    if (probeSpacing < kMinProbeSpacing || probeSpacing > kMaxProbeSpacing) {
+        bad("probeSpacing", std::to_string(probeSpacing),
+            (std::to_string(kMinProbeSpacing) + " .. " + std::to_string(kMaxProbeSpacing) + " pixels")
+                .c_str());
     }
-    if (raysPerProbe < 16 || raysPerProbe > LUMINA_SP_MAX_RAYS) {
-        bad("raysPerProbe", std::to_string(raysPerProbe), "16 .. 256");
+    if (raysPerProbe < kMinRaysPerProbe || raysPerProbe > kMaxRaysPerProbe) {
+        bad("raysPerProbe", std::to_string(raysPerProbe),
+            (std::to_string(kMinRaysPerProbe) + " .. " + std::to_string(kMaxRaysPerProbe)).c_str());
     }
     checkRange("brdfRayFraction", brdfRayFraction, 0.0f, 1.0f, false, "0 .. 1");
     checkRange("lightingPdfFloor", lightingPdfFloor, 0.0f, 1.0f, true, "0 < floor <= 1");

@@ -6,6 +6,12 @@
 
 namespace lumina::gi {
 
+// The ranges validate() accepts, named once for the CLI and the viewer.
+inline constexpr uint32_t kMinProbeSpacing = 2;  // pixels
+inline constexpr uint32_t kMaxProbeSpacing = 64; // pixels
+inline constexpr uint32_t kMinRaysPerProbe = 16;
+inline constexpr uint32_t kMaxRaysPerProbe = 256; // LUMINA_SP_MAX_RAYS
+
 struct ScreenProbeSettings {
     uint32_t probeSpacing = 8;    // pixels per probe edge: one probe per spacing x spacing pixels
     uint32_t raysPerProbe = 64;   // 16 .. 256

@@ -1,7 +1,9 @@
 #include "gi/surface_cache/atlas_tile_list.h"
 
 #include "gi/surface_cache/tile_allocator.h"
+#include "shaders/surface_cache/surface_cache_lighting_shared.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace lumina::surface_cache {
@@ -31,6 +33,15 @@ void AtlasTileList::recordUpload(rhi::ICommandList& commands, std::span<const ui
     if (!tiles.empty()) {
         commands.writeBuffer(*buffer_, tiles.data(), tiles.size_bytes());
     }
+}
+
+uint32_t AtlasTileList::threadsX(uint32_t itemsPerTile) const {
+    return uint32_t(std::min<uint64_t>(uint64_t(count_) * itemsPerTile, LUMINA_TILE_LIST_ROW_THREADS));
+}
+
+uint32_t AtlasTileList::threadsY(uint32_t itemsPerTile) const {
+    const uint64_t threads = uint64_t(count_) * itemsPerTile;
+    return uint32_t((threads + LUMINA_TILE_LIST_ROW_THREADS - 1) / LUMINA_TILE_LIST_ROW_THREADS);
 }
 
 } // namespace lumina::surface_cache

@@ -19,6 +19,11 @@ public:
     // std::out_of_range naming the first that is not).
     void recordUpload(rhi::ICommandList& commands, std::span<const uint32_t> tiles);
 
+    // The thread counts of a dispatch with `itemsPerTile` threads a listed tile, numbered flat
+    // and folded into rows of LUMINA_TILE_LIST_ROW_THREADS (tileListItem in HLSL).
+    uint32_t threadsX(uint32_t itemsPerTile) const;
+    uint32_t threadsY(uint32_t itemsPerTile) const;
+
     const rhi::BufferHandle& buffer() const { return buffer_; }
     uint32_t count() const { return count_; }
     uint32_t tilesPerRow() const { return tilesPerRow_; }

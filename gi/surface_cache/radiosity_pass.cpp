@@ -80,19 +80,20 @@ void RadiosityPass::record(gi::FrameContext& frame, const AtlasSurfaceBindings& 
     sdf_.bindForTracing(bindSurfaces(trace))
         .read(11, voxels.volume())
         .write(0, traced_)
-        .dispatchThreads(probesPerTile, tiles.count(), {64, 1});
+        .dispatchThreads(tiles.threadsX(probesPerTile), tiles.threadsY(probesPerTile), {64, 1});
 
     gi::ComputePass filter = frame.compute(kFilterPassName, "surface_cache/radiosity.filter");
     bindSurfaces(filter)
         .read(12, traced_)
         .write(0, filtered_)
-        .dispatchThreads(probesPerTile, tiles.count(), {64, 1});
+        .dispatchThreads(tiles.threadsX(probesPerTile), tiles.threadsY(probesPerTile), {64, 1});
 
     gi::ComputePass integrate = frame.compute(kIntegratePassName, "surface_cache/radiosity.integrate");
     bindSurfaces(integrate)
         .read(12, filtered_)
         .write(1, surfaces.atlas.indirect)
-        .dispatchThreads(LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE, tiles.count(), {64, 1});
+        .dispatchThreads(tiles.threadsX(LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE),
+                         tiles.threadsY(LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE), {64, 1});
 }
 
 } // namespace lumina::surface_cache

@@ -39,19 +39,24 @@ void RadiositySchedule::setTiles(std::span<const uint32_t> tiles) {
         old.emplace(state.tile, state);
     }
     tiles_.clear();
+    slot_.clear();
     for (uint32_t tile : tiles) {
         const auto it = old.find(tile);
+        if (tile >= slot_.size()) {
+            slot_.resize(size_t(tile) + 1, kNoSlot);
+        }
+        slot_[tile] = uint32_t(tiles_.size());
         tiles_.push_back(it != old.end() ? it->second : TileState{.tile = tile});
     }
 }
 
 void RadiositySchedule::markDirty(std::span<const uint32_t> tiles) {
+    // Through the slot table: a city's first capture marks tens of thousands of tiles.
     for (uint32_t tile : tiles) {
-        for (TileState& state : tiles_) {
-            if (state.tile == tile) {
-                state.dirty = true;
-                state.updates = 0;
-            }
+        if (tile < slot_.size() && slot_[tile] != kNoSlot) {
+            TileState& state = tiles_[slot_[tile]];
+            state.dirty = true;
+            state.updates = 0;
         }
     }
 }

@@ -13,7 +13,7 @@
 namespace lumina::surface_cache {
 
 struct RadiosityScheduleSettings {
-    uint32_t tilesPerUpdate = 256;  // the budget (64x64-texel tiles per update)
+    uint32_t tilesPerUpdate = 256;  // the budget (atlas tiles per update; the presets set it)
     float tolerance = 0.002f;       // stop when maxAlbedo^bounces falls below this...
     uint32_t maxBounces = 256;      // ...or after this many bounces, whichever comes first
     uint32_t refinementPasses = 16; // then this many averaged passes over every tile
@@ -63,6 +63,8 @@ private:
     uint64_t counter_ = 0;
     float lastBlend_ = 1.0f;
     std::vector<TileState> tiles_;
+    static constexpr uint32_t kNoSlot = 0xFFFFFFFFu;
+    std::vector<uint32_t> slot_; // per atlas tile index: its entry in tiles_, or kNoSlot
 };
 
 } // namespace lumina::surface_cache

@@ -110,7 +110,28 @@ bool SurfaceCache::recordDirectLight(gi::FrameContext& frame, const std::optiona
     return true;
 }
 
-void SurfaceCache::update(gi::FrameContext& frame, const std::optional<gi::ShadowedLights>& lights) {
+void SurfaceCache::updateLod(const glm::vec3& viewer) {
+    const CardLodUpdate lod = cards_.updateLod(viewer);
+    // With changes pending (budget, or no room yet), plan again next frame even if still.
+    lodViewer_ = lod.pending > 0 ? std::nullopt : std::optional<glm::vec3>(viewer);
+    lodHistory_.last = lod;
+    ++lodHistory_.updates;
+    lodHistory_.evictions += lod.evicted;
+    lodHistory_.maxEvictionsPerUpdate = std::max(lodHistory_.maxEvictionsPerUpdate, lod.evicted);
+    if (lod.changed() > 0) {
+        cardTiles_ = tilesWithCards(cards_.atlas());
+        schedule_.setTiles(cardTiles_);
+        // Reallocated tiles hold another card's radiosity history: bounces start over (blend 1).
+        schedule_.restart();
+        cardsChanged_ = true;
+    }
+}
+
+void SurfaceCache::update(gi::FrameContext& frame, const std::optional<gi::ShadowedLights>& lights,
+                          const std::optional<glm::vec3>& viewer) {
+    if (viewer && lodViewer_ != viewer) {
+        updateLod(*viewer);
+    }
     if (!initialised_) {
         atlas_.recordClear(frame.commands());
         voxels_.recordClear(frame.commands());
@@ -121,7 +142,10 @@ void SurfaceCache::update(gi::FrameContext& frame, const std::optional<gi::Shado
         uploadCards(frame.commands());
     }
 
-    const std::vector<uint32_t> dirty = cards_.dirtyCards();
+    // The first update captures everything (a load, not a frame in motion); later ones spread a
+    // large change over frames, most useful cards first.
+    const std::vector<uint32_t> dirty =
+        cards_.dirtyCards(updates_ == 0 ? UINT32_MAX : cards_.settings().capturesPerFrame);
     std::vector<uint32_t> dirtyTiles;
     if (dirty.empty()) {
         frame.skip(kCapturePassName, "no dirty cards");
@@ -138,6 +162,7 @@ void SurfaceCache::update(gi::FrameContext& frame, const std::optional<gi::Shado
         }
         schedule_.markDirty(dirtyTiles);
     }
+    lodHistory_.pendingCaptures = uint32_t(cards_.dirtyCards().size());
 
     const bool directChanged = recordDirectLight(frame, lights, dirtyTiles);
 

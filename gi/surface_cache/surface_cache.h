@@ -46,15 +46,19 @@ public:
     static constexpr const char* kCapturePassName = "surface cache: card capture";
 
     // Keeps references to gpuScene and sdf (they must outlive the cache). Throws what
-    // SurfaceCards, SurfaceCacheAtlas and the passes throw for bad settings or a full atlas.
+    // SurfaceCards, SurfaceCacheAtlas and the passes throw for bad settings (a full atlas
+    // degrades the cards' levels instead, surface_cards.h).
     SurfaceCache(rhi::IDevice& device, const scene::Scene& scene, const gi::GpuScene& gpuScene,
                  const sdf::SceneSdf& sdf, const SurfaceCacheSettings& settings,
                  const SurfaceLightingSettings& lighting = {});
 
     // Records one update, lit by `lights` (the deferred renderer's, after its render() this
-    // frame), or by emission alone without them. The cards it captures count as captured once
-    // it returns: submit the frame's commands.
-    void update(gi::FrameContext& frame, const std::optional<gi::ShadowedLights>& lights = std::nullopt);
+    // frame), or by emission alone without them. With a `viewer` (the camera's position) that
+    // moved, the cards' levels of detail follow it first (SurfaceCards::updateLod). The first
+    // update captures every card, later ones at most capturesPerFrame (most useful first). The
+    // cards it captures count as captured once it returns: submit the frame's commands.
+    void update(gi::FrameContext& frame, const std::optional<gi::ShadowedLights>& lights = std::nullopt,
+                const std::optional<glm::vec3>& viewer = std::nullopt);
 
     // An instance moved: its cards are placed anew and captured at the next update, and
     // radiosity restarts.
@@ -70,6 +74,17 @@ public:
     std::vector<glm::vec4> readVoxelLighting() const;
 
     const SurfaceCards& cards() const { return cards_; }
+    // The card LOD's work so far: the last update's changes, and evictions over all updates.
+    struct LodHistory {
+        CardLodUpdate last;
+        uint64_t updates = 0;   // updates that re-planned the levels
+        uint64_t evictions = 0; // cards evicted by those updates
+        uint32_t maxEvictionsPerUpdate = 0;
+        uint32_t pendingCaptures = 0; // dirty cards the last update's capture budget left
+    };
+    const LodHistory& lodHistory() const { return lodHistory_; }
+    // Radiosity has converged and no dirty card waits for its capture.
+    bool settled() const { return schedule_.converged() && lodHistory_.pendingCaptures == 0; }
     const SurfaceCacheAtlas& atlas() const { return atlas_; }
     const VoxelLightingPass& voxelLighting() const { return voxels_; }
     const RadiositySchedule& radiositySchedule() const { return schedule_; }
@@ -85,6 +100,7 @@ public:
     const CardBvh& cardBvh() const { return cardBvh_; }
 
 private:
+    void updateLod(const glm::vec3& viewer);
     void uploadCards(rhi::ICommandList& commands);
     // Records the direct light where it is stale; true when it ran.
     bool recordDirectLight(gi::FrameContext& frame, const std::optional<gi::ShadowedLights>& lights,
@@ -107,9 +123,11 @@ private:
     std::vector<uint32_t> cardTiles_;
     CardBvh cardBvh_; // rebuilt on moves, uploaded with the cards
     rhi::BufferHandle cardBvhBuffer_;
-    bool initialised_ = false;     // the first update clears every layer and buffer
-    bool cardsChanged_ = true;     // card buffer and tile-to-card lookup need an upload
-    bool indirectChanged_ = false; // radiosity wrote the indirect layer after the last combine
+    LodHistory lodHistory_;
+    std::optional<glm::vec3> lodViewer_; // where the levels were last planned from
+    bool initialised_ = false;           // the first update clears every layer and buffer
+    bool cardsChanged_ = true;           // card buffer and tile-to-card lookup need an upload
+    bool indirectChanged_ = false;       // radiosity wrote the indirect layer after the last combine
     uint32_t updates_ = 0;
     // The lights' versions the direct layer was computed with; none before the first.
     std::optional<std::pair<uint64_t, uint64_t>> directVersions_;

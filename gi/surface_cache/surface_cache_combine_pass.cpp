@@ -19,7 +19,8 @@ void SurfaceCacheCombinePass::record(gi::FrameContext& frame, const SurfaceCache
         .read(3, atlas.indirect)
         .read(4, tiles.buffer())
         .write(0, atlas.final)
-        .dispatchThreads(LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE, tiles.count(), {64, 1});
+        .dispatchThreads(tiles.threadsX(LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE),
+                         tiles.threadsY(LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE), {64, 1});
 }
 
 } // namespace lumina::surface_cache

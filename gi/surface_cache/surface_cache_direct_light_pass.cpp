@@ -40,7 +40,8 @@ void SurfaceCacheDirectLightPass::record(gi::FrameContext& frame, const AtlasSur
         .read(6, surfaces.captureDepth)
         .read(7, tiles.buffer())
         .write(0, surfaces.atlas.direct)
-        .dispatchThreads(LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE, tiles.count(), {64, 1});
+        .dispatchThreads(tiles.threadsX(LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE),
+                         tiles.threadsY(LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE), {64, 1});
 }
 
 } // namespace lumina::surface_cache

@@ -94,6 +94,9 @@ std::vector<std::filesystem::path> dumpSurfaceCache(rhi::IDevice& device, const 
     const std::vector<gpu::SurfaceCard>& cards = cache.cards().cards();
     image::Image outlined = image::toDisplay(finalLayer, display);
     for (const gpu::SurfaceCard& card : cards) {
+        if (card.atlasRect.z == 0) {
+            continue; // evicted: no texels
+        }
         const uint32_t x0 = card.atlasRect.x, y0 = card.atlasRect.y;
         const uint32_t x1 = x0 + card.atlasRect.z - 1, y1 = y0 + card.atlasRect.w - 1;
         for (uint32_t x = x0; x <= x1; ++x) {

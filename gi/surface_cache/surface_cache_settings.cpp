@@ -19,8 +19,20 @@ void validate(const SurfaceCacheSettings& s) {
     if (!(s.texelsPerUnit > 0.0f) || !std::isfinite(s.texelsPerUnit)) {
         fail("texelsPerUnit " + std::to_string(s.texelsPerUnit) + " must be positive and finite");
     }
-    if (s.maxCardTiles == 0) {
-        fail("maxCardTiles must be at least 1");
+    if (s.maxCardTexels == 0) {
+        fail("maxCardTexels must be at least 1");
+    }
+    if (s.maxLodLevel > 16) {
+        fail("maxLodLevel " + std::to_string(s.maxLodLevel) + " must be at most 16");
+    }
+    if (!(s.atlasFill > 0.0f && s.atlasFill <= 1.0f)) {
+        fail("atlasFill " + std::to_string(s.atlasFill) + " must be in (0, 1]");
+    }
+    if (!(s.lodHysteresis >= 1.0f) || !std::isfinite(s.lodHysteresis)) {
+        fail("lodHysteresis " + std::to_string(s.lodHysteresis) + " must be at least 1 and finite");
+    }
+    if (s.lodChangesPerFrame == 0 || s.capturesPerFrame == 0) {
+        fail("lodChangesPerFrame and capturesPerFrame must be at least 1");
     }
     if (!(s.paddingTexels > 0.0f) || !std::isfinite(s.paddingTexels)) {
         fail("paddingTexels " + std::to_string(s.paddingTexels) + " must be positive and finite");

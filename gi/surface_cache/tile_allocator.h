@@ -1,5 +1,5 @@
 #pragma once
-// The surface-cache atlas allocator: rectangles of whole 64x64-texel tiles, handed out and
+// The surface-cache atlas allocator: rectangles of whole tiles (kTileSize texels a side), handed out and
 // taken back as cards come and go.
 //
 // A quadtree buddy system over the tile grid. Free space is kept as aligned power-of-two
@@ -26,7 +26,10 @@
 
 namespace lumina::surface_cache {
 
-inline constexpr uint32_t kTileSize = 64;                // texels per tile side
+// Texels per tile side: the smallest card. Small enough that a city's thousands of distant cards
+// each fit in one (a 2048 atlas holds 16384), large enough that a tile is a whole thread group of
+// the atlas passes (256 texels) and holds 4x4 radiosity probes.
+inline constexpr uint32_t kTileSize = 16;
 inline constexpr uint32_t kNoOwner = 0xFFFFFFFFu;        // a free tile's owner
 inline constexpr uint32_t kMaxAtlasTilesPerSide = 1024u; // 65536 texels: beyond any GPU's limit
 

@@ -71,7 +71,8 @@ void VoxelLightingPass::record(gi::FrameContext& frame, const AtlasSurfaceBindin
         .read(11, tiles.buffer())
         .write(0, accumulator_)
         .write(1, volume_)
-        .dispatchThreads(LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE, tiles.count(), {64, 1});
+        .dispatchThreads(tiles.threadsX(LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE),
+                         tiles.threadsY(LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE), {64, 1});
     frame.compute(kResolvePassName, "surface_cache/voxel_lighting.resolve")
         .constants(constants)
         .write(0, accumulator_)

@@ -19,3 +19,4 @@ for exe in "$root/.devbin/lumina" "$root"/.devbin/tests/*; do
 done | sort -u | grep -vE 'libc\.so|libm\.so|ld-linux|libvulkan|libpthread|libdl|librt' \
   | xargs -r -I{} cp {} "$root/.devbin/lib/"
 du -sh "$root/.devbin"
+git -C "$root" rev-parse --short HEAD > "$root/.devbin/commit" 2>/dev/null || true

@@ -28,8 +28,12 @@ RWStructuredBuffer<float4> gNearField : register(u1);
 // card-space (u, v), each weighted by its coverage so that uncaptured texels (a = 0, rgb = 0) do
 // not darken the surface. The footprint is clamped into the card's rectangle (texel centres from
 // x + 0.5 to x + width - 0.5), so a neighbouring card's texels never bleed in; a hit in the
-// card's padding reads its edge. rgb: radiance; a: the summed weight of covered texels.
+// card's padding reads its edge. rgb: radiance; a: the summed weight of covered texels (0 for a
+// card the LOD evicted, so its hits read the voxel lighting).
 float4 cardRadiance(SurfaceCard card, float3 p) {
+    if (card.atlasRect.z == 0u) {
+        return float4(0.0, 0.0, 0.0, 0.0); // evicted by the card LOD: no texels
+    }
     const float2 rectMin = float2(card.atlasRect.xy);
     const float2 rectMax = rectMin + float2(card.atlasRect.zw) - 1.0;
     // Texel-centre coordinates: texel i's centre at i.
@@ -75,7 +79,9 @@ void traceNearField(uint ray, float3 origin) {
                                      : nearFieldRadiance(hit, direction);
 }
 
-[numthreads(LUMINA_SP_PROBE_TEXELS, 1, 1)] void main(uint3 group : SV_GroupID, uint t : SV_GroupIndex) {
+[numthreads(LUMINA_SP_PROBE_TEXELS, 1, 1)] void main(uint3 group
+                                                     : SV_GroupID, uint t
+                                                     : SV_GroupIndex) {
     uint probe;
     float3 origin;
     if (!tracedProbe(group, t, probe, origin)) {

@@ -24,14 +24,16 @@ float3 finiteOrZero(float3 v) {
     return (any(isnan(v)) || any(isinf(v))) ? float3(0.0f, 0.0f, 0.0f) : v;
 }
 
-[numthreads(64, 1, 1)] void main(uint3 id : SV_DispatchThreadID) {
-    // x: texel of the tile, y: entry of the tile list (2D, so no dispatch axis passes 65535 groups).
-    if (id.y >= gConstants.atlas.y || id.x >= LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE) {
+[numthreads(64, 1, 1)] void main(uint3 id
+                                 : SV_DispatchThreadID) {
+    uint entry, item;
+    if (!tileListItem(id.xy, gConstants.atlas.y, LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE, entry,
+                      item)) {
         return;
     }
-    uint tile = gTiles[id.y];
+    uint tile = gTiles[entry];
     uint2 tileOrigin = uint2(tile % gConstants.atlas.z, tile / gConstants.atlas.z) * LUMINA_ATLAS_TILE_SIZE;
-    uint2 texel = tileOrigin + uint2(id.x % LUMINA_ATLAS_TILE_SIZE, id.x / LUMINA_ATLAS_TILE_SIZE);
+    uint2 texel = tileOrigin + uint2(item % LUMINA_ATLAS_TILE_SIZE, item / LUMINA_ATLAS_TILE_SIZE);
     float4 normal = gSurface.Load(int4(texel, 0, 0));
     if (normal.a == 0.0f) {
         gFinal[texel] = float4(0.0f, 0.0f, 0.0f, 0.0f); // no surface: no light
@@ -39,7 +41,8 @@ float3 finiteOrZero(float3 v) {
     }
     float3 albedo = gAlbedo.Load(int3(texel, 0)).rgb;
     float3 emission = finiteOrZero(gSurface.Load(int4(texel, 1, 0)).rgb);
-    float3 irradiance = finiteOrZero(gDirect.Load(int3(texel, 0)).rgb) + finiteOrZero(gIndirect.Load(int3(texel, 0)).rgb);
+    float3 irradiance =
+        finiteOrZero(gDirect.Load(int3(texel, 0)).rgb) + finiteOrZero(gIndirect.Load(int3(texel, 0)).rgb);
     float3 radiance = max(irradiance, 0.0f) * albedo * LUMINA_INV_PI + max(emission, 0.0f);
     gFinal[texel] = roundToHalf(float4(min(radiance, LUMINA_HALF_MAX), 1.0f));
 }

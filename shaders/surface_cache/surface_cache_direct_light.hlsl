@@ -37,12 +37,14 @@ bool cardSeesLight(SurfaceCard card, uint light) {
     return light < LUMINA_CARD_LIGHT_MASK_BITS && (card.lightMask[light / 32u] & (1u << (light % 32u))) != 0u;
 }
 
-[numthreads(64, 1, 1)] void main(uint3 id : SV_DispatchThreadID) {
-    // x: texel of the tile, y: entry of the tile list.
-    if (id.y >= gConstants.atlas.y || id.x >= LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE) {
+[numthreads(64, 1, 1)] void main(uint3 id
+                                 : SV_DispatchThreadID) {
+    uint entry, item;
+    if (!tileListItem(id.xy, gConstants.atlas.y, LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE, entry,
+                      item)) {
         return;
     }
-    uint2 texel = tileListTexel(gTiles[id.y], gConstants.atlas.z, id.x);
+    uint2 texel = tileListTexel(gTiles[entry], gConstants.atlas.z, item);
     float4 normal = gSurface.Load(int4(texel, 0, 0));
     uint cardIndex = atlasTexelCard(texel);
     if (normal.a == 0.0f || cardIndex == LUMINA_NO_CARD) {

@@ -14,9 +14,13 @@
 #define LUMINA_RADIOSITY_RAYS_PER_SIDE 4u
 #define LUMINA_RADIOSITY_RAYS 16u
 // Atlas tile side in texels (TileAllocator's kTileSize).
-#define LUMINA_ATLAS_TILE_SIZE 64u
-#define LUMINA_PROBES_PER_TILE_SIDE 16u
-#define LUMINA_PROBES_PER_TILE 256u
+#define LUMINA_ATLAS_TILE_SIZE 16u
+#define LUMINA_PROBES_PER_TILE_SIDE 4u
+#define LUMINA_PROBES_PER_TILE 16u
+// A tile-list pass runs one thread per item (texel or probe) of every listed tile, numbered
+// flat and folded into rows of this many threads (AtlasTileList::dispatchThreads): no dispatch
+// axis passes 65535 groups, even with every tile of a 4096 atlas (16.7 M texels) listed.
+#define LUMINA_TILE_LIST_ROW_THREADS 65536u
 
 // Voxel lighting accumulates radiance with 32-bit integer atomics in fixed point: one unit is
 // 1 / LUMINA_VOXEL_FIXED_POINT_SCALE of radiance. A texel adds at most
@@ -44,6 +48,15 @@ float roundToHalf1(float v) {
 float4 roundToHalf(float4 v) {
     return float4(roundToHalf1(v.x), roundToHalf1(v.y), roundToHalf1(v.z), roundToHalf1(v.w));
 }
+// The list entry and the item within its tile (texel or probe, row-major) of thread `id` of a
+// tile-list dispatch of `itemsPerTile` items a tile; false past the list's `count` entries.
+bool tileListItem(uint2 id, uint count, uint itemsPerTile, out uint entry, out uint item) {
+    uint flat = id.x + id.y * LUMINA_TILE_LIST_ROW_THREADS;
+    entry = flat / itemsPerTile;
+    item = flat % itemsPerTile;
+    return entry < count;
+}
+
 // The half at or below v (never above: albedo, see card_capture.hlsl).
 float floorToHalf1(float v) {
     return v > 0.0f ? floor(v / halfSpacing(v)) * halfSpacing(v) : 0.0f;

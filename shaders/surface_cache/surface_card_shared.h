@@ -19,7 +19,7 @@ struct SurfaceCard {
     float4 boundsMinAndFlags;    // xyz: world bounds min, padded; w: asfloat(LUMINA_CARD_* flags)
     float4 boundsMaxAndInstance; // xyz: world bounds max, padded; w: asfloat(instance index)
     float4 normalAndPadding;     // xyz: unit world normal; w: the padding added to the bounds (world)
-    uint4 atlasRect;             // texels: x, y, width, height (whole 64-texel tiles)
+    uint4 atlasRect;             // texels: x, y, width, height (whole tiles); zero when evicted
     uint4 lightMask;             // bit i (lane i / 32, bit i % 32): scene light i can reach the card
     uint4 info; // x: mesh, y: card of the mesh, z: axis (LUMINA_CARD_AXIS_*), w: last capture frame
 };
@@ -27,7 +27,8 @@ LUMINA_STATIC_ASSERT_SIZE(SurfaceCard, 144);
 
 LUMINA_GPU_NAMESPACE_END
 
-// Flags. VISIBLE: in use by the passes (set at placement; culling may clear it). DIRTY: its
+// Flags. VISIBLE: the card holds atlas texels (cleared while the LOD evicts it: no texels, hits
+// on it read the voxel lighting). DIRTY: its
 // atlas texels are stale and must be captured again. STATIC / DYNAMIC: its instance has never /
 // has moved since load. TWO_SIDED: it holds back faces of a double-sided material.
 #define LUMINA_CARD_VISIBLE 1u

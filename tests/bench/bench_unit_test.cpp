@@ -56,10 +56,10 @@ TEST(ReferenceCache, KeyFollowsEverythingThatChangesTheImage) {
 }
 
 TEST(BenchPresets, UnknownPresetsAreNamed) {
-    EXPECT_EQ(directPreset("high").sunShadowSize, 4096u);
-    EXPECT_LT(directPreset("low").pointShadowSize, directPreset("medium").pointShadowSize);
+    EXPECT_EQ(findPreset("high").sunShadowSize, 4096u);
+    EXPECT_LT(findPreset("low").pointShadowSize, findPreset("medium").pointShadowSize);
     try {
-        directPreset("ultra");
+        findPreset("ultra");
         FAIL() << "no exception";
     } catch (const std::invalid_argument& e) {
         EXPECT_NE(std::string(e.what()).find("ultra"), std::string::npos);
@@ -85,10 +85,19 @@ TEST(BenchIndirect, IsWhatTheCompositeAdds) {
     EXPECT_THROW(indirectRadiance(irradiance, image::Image::rgb(1, 2), 1.0f), image::ImageError);
 }
 
-TEST(BenchPresets, EveryLumenPresetHasShadowMaps) {
-    // A lumen run takes the direct preset of the same name for its shadow maps.
-    for (const std::string& name : lumenPresetNames()) {
-        EXPECT_NO_THROW(directPreset(name)) << name;
+TEST(Presets, GetDearerFromLowToHigh) {
+    // One table: render, bench and the viewer read the same shadow maps and GI settings.
+    const std::vector<std::string> names = presetNames();
+    ASSERT_EQ(names, (std::vector<std::string>{"low", "medium", "high"}));
+    for (size_t i = 1; i < names.size(); ++i) {
+        const Preset& cheaper = findPreset(names[i - 1]);
+        const Preset& dearer = findPreset(names[i]);
+        EXPECT_LE(cheaper.sunShadowSize, dearer.sunShadowSize) << names[i];
+        EXPECT_LE(cheaper.atlasSize, dearer.atlasSize) << names[i];
+        EXPECT_LT(cheaper.cardTexelsAcross, dearer.cardTexelsAcross) << names[i];
+        EXPECT_LT(cheaper.radiosityTexelsPerFrame, dearer.radiosityTexelsPerFrame) << names[i];
+        EXPECT_GE(cheaper.probeSpacing, dearer.probeSpacing) << names[i];
+        EXPECT_LT(cheaper.raysPerProbe, dearer.raysPerProbe) << names[i];
     }
 }
 

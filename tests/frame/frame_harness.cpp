@@ -9,7 +9,13 @@ namespace {
 gi::FrameRendererSettings rendererSettings(const scene::Scene& scene, const FrameHarnessSettings& settings) {
     gi::FrameRendererSettings out;
     out.technique = settings.technique;
-    out.deferred = {.width = settings.width, .height = settings.height, .log = [](std::string_view) {}};
+    // The preset's shadow maps, as lumina render and lumina bench use them (one table, preset.h).
+    const gi::Preset& preset = gi::findPreset(settings.preset);
+    out.deferred = {.width = settings.width,
+                    .height = settings.height,
+                    .sunShadowSize = preset.sunShadowSize,
+                    .pointShadowSize = preset.pointShadowSize,
+                    .log = [](std::string_view) {}};
     if (settings.technique == gi::GiTechnique::Lumen) {
         out.lumen = testLumenSettings(settings.preset, scene);
         if (settings.probeSpacing != 0) {
@@ -49,7 +55,7 @@ void FrameHarness::render(uint32_t count) {
 }
 
 bool FrameHarness::converged() const {
-    return renderer_.lumen() == nullptr || renderer_.lumen()->surfaceCache().radiositySchedule().converged();
+    return renderer_.lumen() == nullptr || renderer_.lumen()->surfaceCache().settled();
 }
 
 uint32_t FrameHarness::renderUntilConverged(uint32_t extraFrames, uint32_t maxFrames) {

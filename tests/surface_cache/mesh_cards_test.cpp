@@ -166,7 +166,7 @@ TEST(SurfaceCachePlacement, WorldToCardMapsTheSurfaceIntoTheUnitCube) {
             // Tiles from the world size: side length x scale x texels per unit, rounded up.
             const float worldU =
                 glm::length(glm::mat3(m) * axes.u) * glm::dot(meshCard.bounds.size(), glm::abs(axes.u));
-            EXPECT_EQ(placed.tilesX, uint32_t(std::ceil(worldU * 40.0f / 64.0f)));
+            EXPECT_EQ(placed.tilesX, uint32_t(std::ceil(worldU * 40.0f / float(kTileSize))));
             EXPECT_EQ(card.normalAndPadding.w, paddingUnits(settings));
         }
     }
@@ -181,7 +181,7 @@ TEST(SurfaceCachePlacement, SingularTransformThrows) {
 TEST(SurfaceCachePlacement, TilesAreCappedAndAtLeastOne) {
     const std::vector<MeshCard> cards = buildMeshCards(boxMesh({0, 0, 0}, {1000, 0.001f, 1}), kOneSided, {});
     SurfaceCacheSettings settings;
-    settings.maxCardTiles = 8;
+    settings.maxCardTexels = 8 * kTileSize;
     for (const MeshCard& card : cards) {
         const PlacedCard placed = placeCard(card, glm::mat4(1.0f), settings);
         EXPECT_GE(placed.tilesX, 1u);
@@ -190,7 +190,7 @@ TEST(SurfaceCachePlacement, TilesAreCappedAndAtLeastOne) {
         EXPECT_LE(placed.tilesY, 8u);
     }
     // A small atlas caps cards at its own side.
-    settings.atlasSize = 256;
+    settings.atlasSize = 4 * kTileSize;
     EXPECT_EQ(maxCardTilesIn(settings), 4u);
     ASSERT_EQ(cards[4].axis, LUMINA_CARD_AXIS_POS_Z); // u along x: 1000 units
     EXPECT_EQ(placeCard(cards[4], glm::mat4(1.0f), settings).tilesX, 4u);

@@ -1,0 +1,70 @@
+#include "gi/frame/preset.h"
+
+#include <algorithm>
+#include <iterator>
+#include <stdexcept>
+
+namespace lumina::gi {
+namespace {
+
+// Radiosity budgets are whole 64x64-texel blocks (the atlas tile of earlier releases, kept so
+// the figures in docs/gi.md stay comparable): 64, 256 and 1024 of them.
+constexpr uint32_t kBlock = 64 * 64;
+
+constexpr Preset kPresets[] = {
+    {.name = "low",
+     .sunShadowSize = 1024,
+     .pointShadowSize = 256,
+     .atlasSize = 2048,
+     .cardTexelsAcross = 128.0f,
+     .radiosityTexelsPerFrame = 64 * kBlock,
+     .probeSpacing = 16,
+     .raysPerProbe = 32,
+     .probeHistoryBlend = 0.15f,
+     .screenHistoryBlend = 0.3f},
+    {.name = "medium",
+     .sunShadowSize = 2048,
+     .pointShadowSize = 512,
+     .atlasSize = 4096,
+     .cardTexelsAcross = 256.0f,
+     .radiosityTexelsPerFrame = 256 * kBlock,
+     .probeSpacing = 8,
+     .raysPerProbe = 64,
+     .probeHistoryBlend = 0.1f,
+     .screenHistoryBlend = 0.2f},
+    {.name = "high",
+     .sunShadowSize = 4096,
+     .pointShadowSize = 1024,
+     .atlasSize = 4096,
+     .cardTexelsAcross = 512.0f,
+     .radiosityTexelsPerFrame = 1024 * kBlock,
+     .probeSpacing = 8,
+     .raysPerProbe = 128,
+     .probeHistoryBlend = 0.1f,
+     .screenHistoryBlend = 0.2f},
+};
+
+} // namespace
+
+std::vector<std::string> presetNames() {
+    std::vector<std::string> names;
+    for (const Preset& preset : kPresets) {
+        names.emplace_back(preset.name);
+    }
+    return names;
+}
+
+const Preset& findPreset(std::string_view name) {
+    const auto* found = std::find_if(std::begin(kPresets), std::end(kPresets),
+                                     [&](const Preset& p) { return name == p.name; });
+    if (found == std::end(kPresets)) {
+        std::string choices;
+        for (const std::string& n : presetNames()) {
+            choices += (choices.empty() ? "" : ", ") + n;
+        }
+        throw std::invalid_argument("unknown preset '" + std::string(name) + "' (choose " + choices + ")");
+    }
+    return *found;
+}
+
+} // namespace lumina::gi

@@ -1,0 +1,38 @@
+#pragma once
+// The quality presets: one table for every technique and every user (lumina render, lumina
+// bench, the tests, the viewer), so that `--preset low` means the same shadow maps and GI
+// settings wherever it is given. docs/gi.md lists the table.
+//
+//   const Preset& p = findPreset("medium");
+//   deferred.sunShadowSize = p.sunShadowSize;   // every technique
+//   LumenSettings lumen = lumenPreset(p, scene); // gi_technique.h: lengths scaled to the scene
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace lumina::gi {
+
+struct Preset {
+    const char* name;
+    // Shadows, for every technique.
+    uint32_t sunShadowSize;   // texels per side of the sun's shadow map
+    uint32_t pointShadowSize; // texels per cube face of a point light's shadow map
+    // Lumen.
+    uint32_t atlasSize;               // surface-cache atlas side (texels)
+    float cardTexelsAcross;           // card texels across the detail extent (gi_technique.h)
+    uint32_t radiosityTexelsPerFrame; // radiosity budget: atlas texels updated per frame
+    uint32_t probeSpacing;            // pixels per screen-probe edge
+    uint32_t raysPerProbe;            // screen-probe rays
+    float probeHistoryBlend;          // weight of the new frame in the probe history
+    float screenHistoryBlend;         // ... in the full-resolution temporal filter
+};
+
+inline constexpr const char* kDefaultPreset = "medium";
+
+// The preset of that name; std::invalid_argument naming the name and the choices otherwise.
+const Preset& findPreset(std::string_view name);
+// "low", "medium", "high": cheapest first.
+std::vector<std::string> presetNames();
+
+} // namespace lumina::gi
