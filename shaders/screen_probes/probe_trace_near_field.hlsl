@@ -79,9 +79,7 @@ void traceNearField(uint ray, float3 origin) {
                                      : nearFieldRadiance(hit, direction);
 }
 
-[numthreads(LUMINA_SP_PROBE_TEXELS, 1, 1)] void main(uint3 group
-                                                     : SV_GroupID, uint t
-                                                     : SV_GroupIndex) {
+[numthreads(LUMINA_SP_PROBE_TEXELS, 1, 1)] void main(uint3 group : SV_GroupID, uint t : SV_GroupIndex) {
     uint probe;
     float3 origin;
     if (!tracedProbe(group, t, probe, origin)) {

@@ -37,11 +37,9 @@ bool cardSeesLight(SurfaceCard card, uint light) {
     return light < LUMINA_CARD_LIGHT_MASK_BITS && (card.lightMask[light / 32u] & (1u << (light % 32u))) != 0u;
 }
 
-[numthreads(64, 1, 1)] void main(uint3 id
-                                 : SV_DispatchThreadID) {
+[numthreads(64, 1, 1)] void main(uint3 id : SV_DispatchThreadID) {
     uint entry, item;
-    if (!tileListItem(id.xy, gConstants.atlas.y, LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE, entry,
-                      item)) {
+    if (!tileListItem(id.xy, gConstants.atlas.y, LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE, entry, item)) {
         return;
     }
     uint2 texel = tileListTexel(gTiles[entry], gConstants.atlas.z, item);

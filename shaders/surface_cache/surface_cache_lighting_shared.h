@@ -18,7 +18,7 @@
 #define LUMINA_PROBES_PER_TILE_SIDE 4u
 #define LUMINA_PROBES_PER_TILE 16u
 // A tile-list pass runs one thread per item (texel or probe) of every listed tile, numbered
-// flat and folded into rows of this many threads (AtlasTileList::dispatchThreads): no dispatch
+// flat and folded into rows of this many threads (AtlasTileList::threadsX, threadsY): no dispatch
 // axis passes 65535 groups, even with every tile of a 4096 atlas (16.7 M texels) listed.
 #define LUMINA_TILE_LIST_ROW_THREADS 65536u
 

@@ -142,7 +142,9 @@ TEST_P(ProbeNearFieldGpuTest, NearHitsReadTheirCardsFinalLightingAndEveryOutputI
                 redRight += got.r > 2.0f * got.g;
             } else if (colour.g > 2.0f * colour.r) {
                 ++green;
-                greenRight += got.g > got.r;
+                // At least as green as red: a texel at the open front edge, lit mostly by the red
+                // wall facing it, reads r = g in half floats (16-texel tiles, commit after e2d46e6).
+                greenRight += got.g >= got.r;
             }
         }
     }

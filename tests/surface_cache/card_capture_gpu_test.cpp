@@ -110,14 +110,14 @@ TEST_P(SurfaceCacheCaptureGpu, CapturesEachLayerOfAKnownMeshIntoItsRectangle) {
     const scene::Scene scene = captureScene();
     SurfaceCacheSettings settings;
     settings.atlasSize = 256;
-    settings.texelsPerUnit = 32.0f; // the floor (2 units) and the lid (1 unit) take one tile each
+    settings.texelsPerUnit = 56.0f; // the lid (1 unit, padded 60 texels) takes 4 tiles across, the floor 7
     SurfaceCards cards(scene, settings);
     ASSERT_EQ(cards.cards().size(), 2u);
     const gpu::SurfaceCard& lid = cards.cards()[0]; // front layer first
     const gpu::SurfaceCard& floor = cards.cards()[1];
     ASSERT_NEAR(lid.boundsMinAndFlags.y, 1.5f - paddingUnits(settings), 1e-5f);
-    ASSERT_EQ(lid.atlasRect.z, kTileSize);
-    ASSERT_EQ(floor.atlasRect.z, kTileSize);
+    ASSERT_EQ(lid.atlasRect.z, 4 * kTileSize);
+    ASSERT_EQ(floor.atlasRect.z, 7 * kTileSize);
 
     gi::GpuScene gpuScene(device(), scene);
     SurfaceCacheAtlas atlas(device(), settings);
@@ -182,7 +182,7 @@ TEST_P(SurfaceCacheCaptureGpu, CapturesTheCornellBox) {
     const scene::Scene scene = scene::loadScene("cornell_box");
     SurfaceCacheSettings settings;
     settings.atlasSize = 1024;
-    settings.texelsPerUnit = 0.25f; // 4 mm texels: a wall takes 3 x 3 tiles
+    settings.texelsPerUnit = 0.25f; // 4 mm texels: a wall takes 9 x 9 tiles
     SurfaceCards cards(scene, settings);
     gi::GpuScene gpuScene(device(), scene);
     SurfaceCacheAtlas atlas(device(), settings);

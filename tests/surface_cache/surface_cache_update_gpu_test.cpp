@@ -100,7 +100,7 @@ TEST(SurfaceCacheVoxelGrid, CoversTheBoundsWithAVoxelOfMargin) {
 }
 
 TEST_P(SurfaceCacheUpdateGpu, ATileListRefusesTilesOutsideTheAtlas) {
-    AtlasTileList list(device(), 256, "test tiles");
+    AtlasTileList list(device(), 4 * kTileSize, "test tiles");
     rhi::CommandListHandle commands = device().createCommandList();
     commands->begin();
     const std::vector<uint32_t> bad = {3, 16};
