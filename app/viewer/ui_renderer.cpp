@@ -63,8 +63,7 @@ size_t fromTextureId(ImTextureID id) {
 
 } // namespace
 
-UiRenderer::UiRenderer(rhi::IDevice& device, gi::PipelineCache& pipelines)
-    : device_(device), pipelines_(pipelines) {
+UiRenderer::UiRenderer(rhi::IDevice& device) : device_(device) {
     ImGuiIO& io = ImGui::GetIO();
     io.BackendRendererName = "lumina-rhi";
     io.BackendFlags |= ImGuiBackendFlags_RendererHasVtxOffset;
@@ -116,7 +115,7 @@ void UiRenderer::uploadGeometry(rhi::ICommandList& commands, const ImDrawData& d
     commands.writeBuffer(*indices_, indexData.data(), indexBytes);
 }
 
-void UiRenderer::record(rhi::ICommandList& commands, const ImDrawData& data,
+void UiRenderer::record(rhi::ICommandList& commands, gi::PipelineCache& pipelines, const ImDrawData& data,
                         const rhi::TextureHandle& target) {
     if (!fontUploaded_) {
         commands.writeTexture(*font_, {}, fontPixels_.data());
@@ -159,8 +158,8 @@ void UiRenderer::record(rhi::ICommandList& commands, const ImDrawData& data,
                            rhi::BindingSetItem::sampledTexture(1, texture),
                            rhi::BindingSetItem::samplerState(0, sampler_)};
             const auto& entry =
-                pipelines_.graphics(kVertexKernel, kPixelKernel, bindings, sizeof(gpu::UiConstants),
-                                    uiState(), {target->desc().format}, rhi::Format::Unknown);
+                pipelines.graphics(kVertexKernel, kPixelKernel, bindings, sizeof(gpu::UiConstants), uiState(),
+                                   {target->desc().format}, rhi::Format::Unknown);
             rhi::GraphicsState state;
             state.pipeline = entry.pipeline;
             state.colorAttachments = {{target}};

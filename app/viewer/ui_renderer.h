@@ -14,20 +14,21 @@ namespace lumina::app::viewer {
 class UiRenderer {
 public:
     // Builds the font atlas of the current ImGui context.
-    UiRenderer(rhi::IDevice& device, gi::PipelineCache& pipelines);
+    explicit UiRenderer(rhi::IDevice& device);
 
     // Forgets the textures of the last frame (not the font).
     void beginFrame();
     // An id for ImGui::Image and draw lists, valid until the next beginFrame().
     ImTextureID texture(const rhi::TextureHandle& texture);
     // Draws `data` into `target` (RGBA8_UNORM, loaded, not cleared).
-    void record(rhi::ICommandList& commands, const ImDrawData& data, const rhi::TextureHandle& target);
+    // `pipelines` may be a new cache each time (shader hot reload).
+    void record(rhi::ICommandList& commands, gi::PipelineCache& pipelines, const ImDrawData& data,
+                const rhi::TextureHandle& target);
 
 private:
     void uploadGeometry(rhi::ICommandList& commands, const ImDrawData& data);
 
     rhi::IDevice& device_;
-    gi::PipelineCache& pipelines_;
     rhi::TextureHandle font_;
     bool fontUploaded_ = false;
     std::vector<unsigned char> fontPixels_;

@@ -36,8 +36,10 @@ uint64_t allocated(rhi::IDevice& device) {
 
 Viewer::Viewer(rhi::IDevice& device, const ViewerOptions& options, scene::Scene scene)
     : device_(device), options_(options), scene_(std::move(scene)),
-      window_("lumina-viewer: " + scene_.name, scene_.image.width, scene_.image.height), shaders_(device),
-      pipelines_(device, shaders_), camera_(scene_.camera, scene_.worldBounds()) {
+      window_("lumina-viewer: " + scene_.name, scene_.image.width, scene_.image.height),
+      shaders_(std::make_unique<rhi::ShaderLibrary>(device)),
+      pipelines_(std::make_unique<gi::PipelineCache>(device, *shaders_)),
+      camera_(scene_.camera, scene_.worldBounds()) {
     const scene::Bounds bounds = scene_.worldBounds();
     sceneDiagonal_ = bounds.empty() ? 1.0f : glm::length(bounds.max - bounds.min);
     state_.technique = options.technique.empty()
@@ -60,7 +62,7 @@ Viewer::Viewer(rhi::IDevice& device, const ViewerOptions& options, scene::Scene 
     buildRenderer();
 
     const uint64_t beforeViewer = allocated(device_);
-    ui_ = std::make_unique<UiRenderer>(device_, pipelines_);
+    ui_ = std::make_unique<UiRenderer>(device_);
     swapchain_ = device_.createSwapchain({.window = window_.native(),
                                           .width = window_.framebufferWidth(),
                                           .height = window_.framebufferHeight(),
@@ -80,6 +82,12 @@ Viewer::Viewer(rhi::IDevice& device, const ViewerOptions& options, scene::Scene 
                              "': no such view for this technique; the views are:" + names);
         }
         state_.view = size_t(it - state_.views.begin());
+    }
+    if (options.hotReload && device_.capabilities().shaderFormat == rhi::ShaderFormat::Spirv) {
+        if (auto compiler = buildKernelCompiler(shaders_->directory())) {
+            std::cout << "hot reload: watching " << compiler->sourceRoot.string() << '\n';
+            hotReload_ = std::make_unique<ShaderHotReload>(std::move(*compiler));
+        }
     }
     std::cout << "views: " << state_.views.size() << " (the final image and every buffer of the view menu)\n";
     inFlight_.resize(options.framesInFlight);
@@ -261,7 +269,7 @@ void Viewer::scriptedWindowSteps(uint64_t frame) {
 
 void Viewer::recordFrame(rhi::ICommandList& commands, uint64_t frameIndex,
                          std::vector<gi::SkippedPass>& skipped) {
-    gi::FrameContext frame(pipelines_, commands, frameIndex);
+    gi::FrameContext frame(*pipelines_, commands, frameIndex);
     renderer_->render(frame);
     if (backbuffer_) {
         const float exposureScale = std::exp2(state_.exposureEv);
@@ -270,10 +278,29 @@ void Viewer::recordFrame(rhi::ICommandList& commands, uint64_t frameIndex,
         commands.clearColor(*backbuffer_, kLetterboxColor);
         ui_->beginFrame();
         buildUi(image);
-        ui_->record(commands, *ImGui::GetDrawData(), backbuffer_);
+        ui_->record(commands, *pipelines_, *ImGui::GetDrawData(), backbuffer_);
         commands.transition(*backbuffer_, rhi::ResourceState::CopySource);
     }
     skipped = frame.skipped();
+}
+
+void Viewer::reloadShaders() {
+    if (!hotReload_ || !hotReload_->poll()) {
+        if (hotReload_ && !hotReload_->error().empty() && state_.shaderError != hotReload_->error()) {
+            state_.shaderError = hotReload_->error();
+            state_.status = hotReload_->message();
+            std::cerr << "hot reload: " << state_.shaderError << '\n';
+        }
+        return;
+    }
+    // The frames in flight still use the old pipelines; they are released with them.
+    device_.waitIdle();
+    pipelines_.reset();
+    shaders_ = std::make_unique<rhi::ShaderLibrary>(device_);
+    pipelines_ = std::make_unique<gi::PipelineCache>(device_, *shaders_);
+    state_.shaderError.clear();
+    state_.status = hotReload_->message();
+    std::cout << "hot reload: " << state_.status << std::endl;
 }
 
 void Viewer::takeScreenshot(const std::filesystem::path& path) {
@@ -310,6 +337,7 @@ int Viewer::run() {
         }
         handleKeys(seconds);
         applyEdits();
+        reloadShaders();
         if (options_.cycleViews) {
             state_.view = frame % state_.views.size();
         }

@@ -5,6 +5,7 @@
 #include "app/viewer/buffer_views.h"
 #include "app/viewer/fly_camera.h"
 #include "app/viewer/glfw_window.h"
+#include "app/viewer/shader_hot_reload.h"
 #include "app/viewer/ui_renderer.h"
 #include "app/viewer/viewer_options.h"
 #include "gi/core/pipeline_cache.h"
@@ -34,6 +35,7 @@ struct ViewerState {
     bool lightsChanged = false;
     bool screenshotRequested = false;
     std::string status;        // the last action's message (screenshot written, rebuild failed...)
+    std::string shaderError;   // the compiler's output when a saved kernel does not compile
     std::deque<float> frameMs; // CPU frame times, newest last
     std::deque<float> gpuMs;   // GPU time of the frame's passes
     std::vector<rhi::TimerResult> timers;
@@ -71,6 +73,7 @@ private:
     void recordFrame(rhi::ICommandList& commands, uint64_t frameIndex, std::vector<gi::SkippedPass>& skipped);
     void buildUi(const rhi::TextureHandle& image);
     void takeScreenshot(const std::filesystem::path& path);
+    void reloadShaders();
 
     rhi::IDevice& device_;
     ViewerOptions options_;
@@ -81,8 +84,10 @@ private:
     rhi::TextureHandle backbuffer_; // what present() copies: RGBA8, the window's size
     bool minimised_ = false;
     bool forcedMinimise_ = false; // --test-resize's minimise, where no window manager iconifies
-    rhi::ShaderLibrary shaders_;
-    gi::PipelineCache pipelines_;
+    // Replaced together when hot reload changes a kernel: the next frame builds new pipelines.
+    std::unique_ptr<rhi::ShaderLibrary> shaders_;
+    std::unique_ptr<gi::PipelineCache> pipelines_;
+    std::unique_ptr<ShaderHotReload> hotReload_;
     std::unique_ptr<gi::GpuScene> gpuScene_;
     std::unique_ptr<gi::FrameRenderer> renderer_;
     FlyCamera camera_;

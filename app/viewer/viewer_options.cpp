@@ -24,6 +24,8 @@ const std::vector<FlagSpec>& viewerFlags() {
         {"screenshot-after", "N PATH", "render N frames, write the frame to PATH (.png or .exr), exit"},
         {"view", "NAME", "start on a debug view, by its name in the view menu (e.g. 'gbuffer: normal')"},
         {"screenshot-window", "", "screenshots show the window, UI included, instead of the rendered frame"},
+        {"no-hot-reload", "",
+         "do not recompile a kernel when its HLSL file is saved (SPIR-V builds with glslang)"},
         {"test-resize", "", "resize, minimise and restore the window during the first frames (tests)"},
         {"cycle-views", "", "show the next debug view every frame (tests: every view once)"},
     };
@@ -141,6 +143,7 @@ ViewerOptions parseViewerOptions(const std::vector<std::string>& rawArgs) {
     options.vsync = !parsed.has("no-vsync");
     options.framesInFlight = static_cast<uint32_t>(parsed.getUint("frames-in-flight", 2, 2, 3));
     options.testResize = parsed.has("test-resize");
+    options.hotReload = !parsed.has("no-hot-reload");
     options.view = parsed.get("view");
     options.cycleViews = parsed.has("cycle-views");
     options.screenshotWindow = parsed.has("screenshot-window");

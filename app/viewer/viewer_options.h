@@ -27,6 +27,7 @@ struct ViewerOptions {
     // Resizes the window and minimises it once during the first frames (tests).
     bool testResize = false;
     bool cycleViews = false;
+    bool hotReload = true; // recompile kernels whose HLSL file is saved
     bool help = false;
 };
 

@@ -77,6 +77,11 @@ void Viewer::buildUi(const rhi::TextureHandle& image) {
     if (!state_.status.empty()) {
         ImGui::TextWrapped("%s", state_.status.c_str());
     }
+    if (!state_.shaderError.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+        ImGui::TextWrapped("%s", state_.shaderError.c_str());
+        ImGui::PopStyleColor();
+    }
     if (ImGui::CollapsingHeader("renderer", ImGuiTreeNodeFlags_DefaultOpen)) {
         state_.rebuildRenderer |= combo("technique", state_.technique, gi::giTechniqueNames());
         if (state_.technique == "lumen") {
