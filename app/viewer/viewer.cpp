@@ -140,6 +140,7 @@ void Viewer::applyEdits() {
         buildRenderer();
         state_.status = "renderer rebuilt: " + state_.technique +
                         (renderer_->lumen() ? ", preset " + state_.preset : std::string());
+        std::cout << state_.status << std::endl;
     }
     if (state_.lightsChanged) {
         state_.lightsChanged = false;
@@ -217,11 +218,13 @@ void Viewer::resizeIfNeeded() {
     if (forcedMinimise_) {
         width = height = 0;
     }
-    minimised_ = width == 0 || height == 0;
     if (width != swapchain_->width() || height != swapchain_->height()) {
         swapchain_->resize(width, height, state_.vsync);
         std::cout << "swapchain: " << swapchain_->width() << "x" << swapchain_->height() << '\n';
     }
+    // The surface has the last word on the size (0 x 0 while the window manager minimises it,
+    // even when GLFW still reports the old framebuffer size).
+    minimised_ = swapchain_->width() == 0 || swapchain_->height() == 0;
     if (minimised_) {
         backbuffer_.reset();
         return;
@@ -264,6 +267,34 @@ void Viewer::scriptedWindowSteps(uint64_t frame) {
     if (frame >= 2 && frame <= 10) {
         // Let the X server apply the size before the swapchain asks the surface for it.
         glfwWaitEventsTimeout(0.05);
+    }
+}
+
+// --test-edits: what a user does in the panels, scripted: the technique switched to direct and
+// back to lumen with another preset (each a renderer rebuild), and the first light made brighter
+// and moved, so those paths run under validation.
+void Viewer::scriptedEdits(uint64_t frame) {
+    switch (frame) {
+    case 3:
+        state_.technique = "direct";
+        state_.rebuildRenderer = true;
+        break;
+    case 6:
+        state_.technique = "lumen";
+        state_.preset = "low";
+        state_.rebuildRenderer = true;
+        break;
+    case 9:
+        if (!scene_.lights.empty()) {
+            scene::Light& light = scene_.lights.front();
+            light.intensity *= 2.0f;
+            light.position += 0.05f * sceneDiagonal_ * camera_.camera().right();
+            light.direction = glm::normalize(light.direction + glm::vec3(0.1f, 0.0f, 0.0f));
+            state_.lightsChanged = true;
+        }
+        break;
+    default:
+        break;
     }
 }
 
@@ -323,6 +354,9 @@ int Viewer::run() {
         window_.pollEvents();
         if (options_.testResize) {
             scriptedWindowSteps(frame);
+        }
+        if (options_.testEdits) {
+            scriptedEdits(frame);
         }
         resizeIfNeeded();
         if (minimised_ && !forcedMinimise_) {

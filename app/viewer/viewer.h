@@ -70,6 +70,7 @@ private:
     void handleKeys(float seconds);
     void resizeIfNeeded();
     void scriptedWindowSteps(uint64_t frame);
+    void scriptedEdits(uint64_t frame);
     void recordFrame(rhi::ICommandList& commands, uint64_t frameIndex, std::vector<gi::SkippedPass>& skipped);
     void buildUi(const rhi::TextureHandle& image);
     void takeScreenshot(const std::filesystem::path& path);

@@ -27,6 +27,7 @@ const std::vector<FlagSpec>& viewerFlags() {
         {"no-hot-reload", "",
          "do not recompile a kernel when its HLSL file is saved (SPIR-V builds with glslang)"},
         {"test-resize", "", "resize, minimise and restore the window during the first frames (tests)"},
+        {"test-edits", "", "switch technique and preset and edit a light during the first frames (tests)"},
         {"cycle-views", "", "show the next debug view every frame (tests: every view once)"},
     };
     return flags;
@@ -146,6 +147,7 @@ ViewerOptions parseViewerOptions(const std::vector<std::string>& rawArgs) {
     options.hotReload = !parsed.has("no-hot-reload");
     options.view = parsed.get("view");
     options.cycleViews = parsed.has("cycle-views");
+    options.testEdits = parsed.has("test-edits");
     options.screenshotWindow = parsed.has("screenshot-window");
     if (options.screenshotWindow && options.screenshotAfter && options.screenshotPath.extension() != ".png") {
         throw UsageError("--screenshot-window writes the window as .png only, not " +

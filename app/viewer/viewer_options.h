@@ -27,7 +27,8 @@ struct ViewerOptions {
     // Resizes the window and minimises it once during the first frames (tests).
     bool testResize = false;
     bool cycleViews = false;
-    bool hotReload = true; // recompile kernels whose HLSL file is saved
+    bool testEdits = false; // switches technique and preset and edits a light during the first frames
+    bool hotReload = true;  // recompile kernels whose HLSL file is saved
     bool help = false;
 };
 

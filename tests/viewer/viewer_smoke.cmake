@@ -4,7 +4,8 @@
 # 2. cornell_box at 96x96 with the validation layer (synchronization validation on): the window
 #    is resized, minimised and restored while it renders (--test-resize), and after FRAMES
 #    frames the viewer writes the frame as EXR and exits 0. Any validation message exits 1.
-#    Then every debug view of the view menu once, one per frame (--cycle-views).
+#    Then every debug view of the view menu once, one per frame (--cycle-views), with the
+#    technique, preset and a light changed on the way (--test-edits).
 # 3. `lumina render` of the same scene, size and frame count writes the same view; the two
 #    EXRs must agree within relMSE 1e-4 (the viewer renders exactly the frames `lumina render`
 #    does, plus its own passes after the composite; measured on lavapipe: relMSE 0).
@@ -45,8 +46,10 @@ if(ERR MATCHES "validation")
   message(FATAL_ERROR "[render] validation messages:\n${ERR}")
 endif()
 
-# Every debug view once, on a scene with a sun-less point light (cube shadow maps), under validation.
-viewer(0 views cornell_box_point --size 32x32 --validation --cycle-views --frames 30)
+# Every debug view once, on a scene with a point light (cube shadow maps), under validation, while
+# the technique is switched to direct and back to lumen (preset low) and the light is edited.
+viewer(0 views cornell_box_point --size 32x32 --validation --cycle-views --test-edits --frames 30)
+expect_match(views "${OUT}" "renderer rebuilt: direct.*renderer rebuilt: lumen, preset low")
 string(REGEX MATCH "views: ([0-9]+)" _ "${OUT}")
 if(NOT CMAKE_MATCH_1 OR CMAKE_MATCH_1 GREATER 30)
   message(FATAL_ERROR "[views] expected at most 30 views, got '${CMAKE_MATCH_1}'")
