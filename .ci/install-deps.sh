@@ -7,7 +7,8 @@ packages=(
   build-essential cmake ninja-build pkg-config git clang clang-format libclang-rt-14-dev
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
   glslang-tools spirv-tools
-  libglm-dev libglfw3-dev libopenexr-dev libtinygltf-dev nlohmann-json3-dev libstb-dev
+  # libxrandr-dev: glfw3native.h includes Xrandr.h (the viewer's native X11 window handle)
+  libglm-dev libglfw3-dev libxrandr-dev libimgui-dev libopenexr-dev libtinygltf-dev nlohmann-json3-dev libstb-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-matplotlib
   assimp-testmodels

@@ -87,7 +87,10 @@ ParsedArgs parseArgs(std::string_view command, const std::vector<std::string>& a
         return nullptr;
     };
 
-    const std::string helpHint = command.empty() ? "lumina --help" : "lumina " + std::string(command) + " --help";
+    // A subcommand's help is `lumina NAME --help`; another tool (lumina-viewer) passes its own name.
+    const std::string helpHint = command.empty()                  ? "lumina --help"
+                                 : command.starts_with("lumina") ? std::string(command) + " --help"
+                                                                 : "lumina " + std::string(command) + " --help";
     ParsedArgs parsed;
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& arg = args[i];

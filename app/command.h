@@ -20,7 +20,8 @@ struct Command {
 const std::vector<Command>& allCommands();
 
 // Opens the device named by --api/--device (validation on with --validation), printing
-// validation messages to stderr.
-rhi::DeviceHandle openDevice(const CommonOptions& options);
+// validation messages to stderr. `presentation`: the device will present to windows
+// (rhi::DeviceDesc::presentation; the viewer).
+rhi::DeviceHandle openDevice(const CommonOptions& options, bool presentation = false);
 
 } // namespace lumina::app

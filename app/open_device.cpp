@@ -6,7 +6,7 @@
 
 namespace lumina::app {
 
-rhi::DeviceHandle openDevice(const CommonOptions& options) {
+rhi::DeviceHandle openDevice(const CommonOptions& options, bool presentation) {
     const auto adapters = listAdapters(options.api);
     if (adapters.empty()) {
         throw rhi::Error("no " + std::string(rhi::apiName(options.api)) + " adapter found" +
@@ -20,6 +20,7 @@ rhi::DeviceHandle openDevice(const CommonOptions& options) {
     desc.adapterIndex = options.deviceIndex;
     desc.validation = options.validation;
     desc.synchronizationValidation = options.validation;
+    desc.presentation = presentation;
     desc.messageCallback = [](rhi::MessageSeverity severity, std::string_view message) {
         std::cerr << (severity == rhi::MessageSeverity::Error ? "validation error: " : "validation: ") << message
                   << '\n';

@@ -12,6 +12,7 @@
 #include "rhi/command_list.h"
 #include "rhi/pipeline.h"
 #include "rhi/resource.h"
+#include "rhi/swapchain.h"
 
 namespace lumina::rhi {
 
@@ -40,6 +41,9 @@ struct DeviceDesc {
     bool validation = false;
     bool synchronizationValidation = false; // Vulkan: VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION
     bool gpuBasedValidation = false;
+    // Enables presenting to windows (createSwapchain): the surface and swapchain extensions on
+    // Vulkan. Off for headless work, which then needs no window system at all.
+    bool presentation = false;
     // Receives every validation warning and error (and the backend's own diagnostics).
     std::function<void(MessageSeverity, std::string_view)> messageCallback;
 };
@@ -87,6 +91,9 @@ public:
     virtual ComputePipelineHandle createComputePipeline(const ComputePipelineDesc& desc) = 0;
     virtual GraphicsPipelineHandle createGraphicsPipeline(const GraphicsPipelineDesc& desc) = 0;
     virtual CommandListHandle createCommandList(QueueType queue = QueueType::Graphics) = 0;
+    // Presents through the graphics queue. Throws rhi::Error when the device was created
+    // without DeviceDesc::presentation or the window cannot be presented to.
+    virtual SwapchainHandle createSwapchain(const SwapchainDesc& desc) = 0;
 
     virtual IQueue& queue(QueueType type) = 0;
     virtual void waitIdle() = 0;

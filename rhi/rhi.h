@@ -9,4 +9,5 @@
 #include "rhi/resource.h"
 #include "rhi/shader_library.h"
 #include "rhi/state_tracker.h"
+#include "rhi/swapchain.h"
 #include "rhi/transfer.h"

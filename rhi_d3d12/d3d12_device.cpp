@@ -6,6 +6,7 @@
 #include "rhi_d3d12/d3d12_check.h"
 #include "rhi_d3d12/d3d12_dred.h"
 #include "rhi_d3d12/d3d12_sampler.h"
+#include "rhi_d3d12/d3d12_swapchain.h"
 #include "rhi_d3d12/d3d12_texture.h"
 
 #include <iterator>
@@ -203,6 +204,11 @@ rhi::CommandListHandle Device::createCommandList(rhi::QueueType queue) {
     const std::string name = std::string("lumina ") + kNames[size_t(queue)] + " command list " +
                              std::to_string(commandListCount_++);
     return std::make_shared<CommandList>(context_, shared_, queue, name);
+}
+
+rhi::SwapchainHandle Device::createSwapchain(const rhi::SwapchainDesc& desc) {
+    // DXGI swapchains need no device option: DeviceDesc::presentation matters to Vulkan only.
+    return std::make_unique<Swapchain>(context_, *queues_[size_t(rhi::QueueType::Graphics)], desc);
 }
 
 rhi::IQueue& Device::queue(rhi::QueueType type) {

@@ -4,6 +4,8 @@
 #include "rhi_vulkan/vk_check.h"
 #include "rhi_vulkan/vk_struct.h"
 
+#include <algorithm>
+#include <cstring>
 #include <string>
 
 namespace lumina::vulkan {
@@ -37,9 +39,10 @@ const char* memoryName(rhi::MemoryType memory) {
 } // namespace
 
 Context::Context(const rhi::DeviceDesc& desc)
-    : messages_(desc.messageCallback), instance_({.validation = desc.validation,
+    : presentation_(desc.presentation), messages_(desc.messageCallback), instance_({.validation = desc.validation,
                                                   .synchronizationValidation = desc.synchronizationValidation,
-                                                  .gpuBasedValidation = desc.gpuBasedValidation},
+                                                  .gpuBasedValidation = desc.gpuBasedValidation,
+                                                  .presentation = desc.presentation},
                                                  &messages_) {
     const auto physicalDevices = instance_.physicalDevices();
     if (desc.adapterIndex >= physicalDevices.size()) {
@@ -183,8 +186,26 @@ void Context::createDevice() {
     features_.independentBlend = enabled.features.independentBlend;
     features_.hostQueryReset = enabled12.hostQueryReset;
 
+    std::vector<const char*> extensions;
+    if (presentation_) {
+        uint32_t count = 0;
+        vkEnumerateDeviceExtensionProperties(physicalDevice_, nullptr, &count, nullptr);
+        std::vector<VkExtensionProperties> available(count);
+        vkEnumerateDeviceExtensionProperties(physicalDevice_, nullptr, &count, available.data());
+        features_.swapchain = std::any_of(available.begin(), available.end(), [](const VkExtensionProperties& e) {
+            return std::strcmp(e.extensionName, VK_KHR_SWAPCHAIN_EXTENSION_NAME) == 0;
+        });
+        if (!features_.swapchain) {
+            throw rhi::Error("Vulkan adapter '" + adapter_.name + "' cannot present: no " +
+                             VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+        }
+        extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+    }
+
     auto info = vkStruct<VkDeviceCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO);
     info.pNext = &enabled;
+    info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
+    info.ppEnabledExtensionNames = extensions.data();
     info.queueCreateInfoCount = static_cast<uint32_t>(queueInfos.size());
     info.pQueueCreateInfos = queueInfos.data();
     check(vkCreateDevice(physicalDevice_, &info, nullptr, &device_), "vkCreateDevice", adapter_.name);

@@ -34,6 +34,7 @@ struct EnabledFeatures {
     bool imageCubeArray = false;
     bool independentBlend = false;
     bool hostQueryReset = false;
+    bool swapchain = false; // VK_KHR_swapchain, with DeviceDesc::presentation
 };
 
 class Context {
@@ -43,6 +44,7 @@ public:
     Context(const Context&) = delete;
     Context& operator=(const Context&) = delete;
 
+    VkInstance instance() const { return instance_.handle(); }
     VkDevice device() const { return device_; }
     VkPhysicalDevice physicalDevice() const { return physicalDevice_; }
     const VkPhysicalDeviceProperties& properties() const { return properties_; }
@@ -84,6 +86,7 @@ public:
 private:
     void createDevice();
 
+    bool presentation_ = false;
     // Declared first: the sink must outlive the instance's messenger.
     MessageSink messages_;
     Instance instance_;

@@ -9,6 +9,7 @@
 #include "rhi_vulkan/vk_queue.h"
 #include "rhi_vulkan/vk_sampler.h"
 #include "rhi_vulkan/vk_shader.h"
+#include "rhi_vulkan/vk_swapchain.h"
 #include "rhi_vulkan/vk_texture.h"
 
 namespace lumina::vulkan {
@@ -103,6 +104,10 @@ uint64_t Device::validationMessageCount() const {
 
 uint64_t Device::allocatedMemoryBytes() const {
     return context_->allocatedBytes();
+}
+
+rhi::SwapchainHandle Device::createSwapchain(const rhi::SwapchainDesc& desc) {
+    return std::make_unique<Swapchain>(context_, desc);
 }
 
 } // namespace lumina::vulkan

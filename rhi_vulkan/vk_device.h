@@ -27,6 +27,7 @@ public:
     rhi::ComputePipelineHandle createComputePipeline(const rhi::ComputePipelineDesc& desc) override;
     rhi::GraphicsPipelineHandle createGraphicsPipeline(const rhi::GraphicsPipelineDesc& desc) override;
     rhi::CommandListHandle createCommandList(rhi::QueueType queue) override;
+    rhi::SwapchainHandle createSwapchain(const rhi::SwapchainDesc& desc) override;
 
     rhi::IQueue& queue(rhi::QueueType type) override;
     void waitIdle() override;

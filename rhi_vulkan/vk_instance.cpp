@@ -1,4 +1,5 @@
 #include "rhi_vulkan/vk_instance.h"
+#include "rhi_vulkan/vk_swapchain_surface.h"
 
 #include "rhi/error.h"
 #include "rhi_vulkan/vk_check.h"
@@ -121,6 +122,16 @@ Instance::Instance(const InstanceOptions& options, MessageSink* sink) {
         (validation && hasInstanceExtension(VK_EXT_DEBUG_UTILS_EXTENSION_NAME, kValidationLayer));
     if (debugUtils) {
         extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+    }
+
+    if (options.presentation) {
+        for (const char* surface : presentationExtensions()) {
+            if (!hasInstanceExtension(surface)) {
+                throw rhi::Error(std::string("presenting to a window needs the Vulkan instance extension ") +
+                                 surface + ", which the loader and drivers do not offer");
+            }
+            extensions.push_back(surface);
+        }
     }
 
     std::vector<VkValidationFeatureEnableEXT> enabledChecks;

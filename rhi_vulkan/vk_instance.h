@@ -31,6 +31,7 @@ struct InstanceOptions {
     bool validation = false;
     bool synchronizationValidation = false;
     bool gpuBasedValidation = false;
+    bool presentation = false; // VK_KHR_surface and this platform's surface extension
 };
 
 class Instance {

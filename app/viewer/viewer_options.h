@@ -1,0 +1,39 @@
+#pragma once
+// `lumina-viewer SCENE [flags]`: the flags, their help and their parsing. The grammar is the
+// `lumina` CLI's (app/cli.h): a bad flag or value is a UsageError, exit code 2.
+#include "app/cli.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lumina::app::viewer {
+
+struct ViewerOptions {
+    std::string scene;
+    CommonOptions common;  // --api, --device, --size (render and window size), --frames, --validation
+    std::string technique; // empty: the scene's, else lumen
+    std::string preset;    // empty: the scene's, else medium
+    float exposureEv = 0.0f;
+    bool vsync = true;
+    uint32_t framesInFlight = 2;
+    // --screenshot-after N PATH: render N frames, write PATH (.png or .exr), exit.
+    std::optional<uint32_t> screenshotAfter;
+    std::filesystem::path screenshotPath;
+    std::string view;              // empty: the final image
+    bool screenshotWindow = false; // screenshots of the back buffer (UI included)
+    // Resizes the window and minimises it once during the first frames (tests).
+    bool testResize = false;
+    bool cycleViews = false;
+    bool testEdits = false; // switches technique and preset and edits a light during the first frames
+    bool hotReload = true;  // recompile kernels whose HLSL file is saved
+    bool help = false;
+};
+
+// Throws UsageError for anything wrong, naming the flag.
+ViewerOptions parseViewerOptions(const std::vector<std::string>& args);
+void printViewerHelp();
+
+} // namespace lumina::app::viewer
