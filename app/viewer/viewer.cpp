@@ -105,16 +105,21 @@ Viewer::~Viewer() {
 
 void Viewer::buildRenderer() {
     gi::FrameRendererSettings settings;
+    const gi::Preset* preset = nullptr;
     try {
         settings.technique = gi::parseGiTechnique(state_.technique);
+        preset = &gi::findPreset(state_.preset);
         if (settings.technique == gi::GiTechnique::Lumen) {
-            settings.lumen = gi::lumenPreset(state_.preset, scene_);
+            settings.lumen = gi::lumenPreset(*preset, scene_);
         }
     } catch (const std::invalid_argument& e) {
         throw UsageError(e.what());
     }
+    // The preset's shadow maps, as lumina render uses them (one table, gi/frame/preset.h).
     settings.deferred = {.width = scene_.image.width,
                          .height = scene_.image.height,
+                         .sunShadowSize = preset->sunShadowSize,
+                         .pointShadowSize = preset->pointShadowSize,
                          .exposureEv = state_.exposureEv,
                          .log = [](std::string_view line) { std::cout << "note: " << line << '\n'; }};
     device_.waitIdle();

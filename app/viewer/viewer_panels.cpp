@@ -85,7 +85,7 @@ void Viewer::buildUi(const rhi::TextureHandle& image) {
     if (ImGui::CollapsingHeader("renderer", ImGuiTreeNodeFlags_DefaultOpen)) {
         state_.rebuildRenderer |= combo("technique", state_.technique, gi::giTechniqueNames());
         if (state_.technique == "lumen") {
-            state_.rebuildRenderer |= combo("preset", state_.preset, gi::lumenPresetNames());
+            state_.rebuildRenderer |= combo("preset", state_.preset, gi::presetNames());
         }
         ImGui::SliderFloat("exposure (EV)", &state_.exposureEv, -8.0f, 8.0f, "%.1f");
         ImGui::Checkbox("vsync (V)", &state_.vsync);
