@@ -53,10 +53,12 @@ void printBuildReport(const sdf::SceneSdfData& data, bool cacheUsed) {
     }
     std::printf(
         "mesh SDFs: %zu meshes, %u built (%llu voxels), %u loaded from cache (%llu voxels), %u sharing "
-        "another's, in %.3f s\n",
+        "another's, in %.3f s%s\n",
         report.meshes.size(), report.meshesBuilt, static_cast<unsigned long long>(report.voxelsBuilt),
         report.meshesLoaded, static_cast<unsigned long long>(report.voxelsLoaded), report.meshesShared,
-        report.meshSeconds);
+        report.meshSeconds,
+        report.buildThreads == 0 ? ""
+                                 : (" on " + std::to_string(report.buildThreads) + " thread(s)").c_str());
     if (report.voxelsBuilt == 0 && !report.meshes.empty()) {
         std::printf("mesh SDFs: loaded from cache, 0 voxels built\n");
     }
@@ -68,6 +70,14 @@ void printBuildReport(const sdf::SceneSdfData& data, bool cacheUsed) {
                 atlas.format == sdf::SdfTexelFormat::R16F ? "R16F" : "R32F",
                 double(atlas.byteSize()) / (1024.0 * 1024.0), report.packSeconds);
     std::printf("instances: %zu with an SDF\n", data.instances.size());
+    const sdf::GlobalSdfCascadeLayout& cascades = data.cascades;
+    const double globalMiB = double(sdf::cascadeBytes(cascades)) / (1024.0 * 1024.0);
+    std::printf("global SDF: %u cascade(s), %s (RG32F, %.2f MiB)%s\n", cascades.count,
+                sdf::describeCascades(cascades).c_str(), globalMiB,
+                cascades.scrolls() ? ", following the camera" : ", scene-fitted");
+    std::printf("SDF memory: %.2f MiB (atlas %.2f + global %.2f)\n",
+                double(atlas.byteSize()) / (1024.0 * 1024.0) + globalMiB,
+                double(atlas.byteSize()) / (1024.0 * 1024.0), globalMiB);
 }
 
 sdf::SdfField parseField(const std::string& name) {
@@ -166,13 +176,17 @@ int runSdf(const ParsedArgs& args) {
     const std::vector<rhi::TimerResult> timers = submitAndWait(*device, *list);
     const sdf::GlobalSdfSettings& grid = sdfs.data().global;
     const sdf::GlobalComposeStats& compose = sdfs.lastCompose();
-    std::printf(
-        "global SDF: %s voxels of %.4g (RG32F, %.2f MiB), truncated at %.4g: %s, %u bricks (%llu voxels) "
-        "in %.3f ms GPU\n",
-        dimsString(grid.dims).c_str(), grid.voxelSize,
-        double(grid.dims.x) * grid.dims.y * grid.dims.z * 8.0 / (1024.0 * 1024.0), grid.maxDistance,
-        compose.reason.c_str(), compose.bricks, static_cast<unsigned long long>(compose.voxels),
-        timers.empty() ? 0.0 : timers.front().milliseconds);
+    for (uint32_t c = 0; c < sdfs.data().cascades.count; ++c) {
+        const sdf::GlobalSdfSettings cascade = sdfs.cascadeGrid(c);
+        const glm::vec3 far = cascade.boundsMin + glm::vec3(cascade.dims) * cascade.voxelSize;
+        std::printf(
+            "  cascade %u: %s voxels of %.4g over (%.4g %.4g %.4g)-(%.4g %.4g %.4g), truncated at %.4g\n", c,
+            dimsString(cascade.dims).c_str(), cascade.voxelSize, cascade.boundsMin.x, cascade.boundsMin.y,
+            cascade.boundsMin.z, far.x, far.y, far.z, cascade.maxDistance);
+    }
+    std::printf("global SDF compose: %s, %u bricks (%llu voxels) in %.3f ms GPU\n", compose.reason.c_str(),
+                compose.bricks, static_cast<unsigned long long>(compose.voxels),
+                timers.empty() ? 0.0 : timers.front().milliseconds);
 
     if (args.has("slice-png")) {
         const sdf::GlobalSdf global = sdf::readGlobalSdf(*device, sdfs);

@@ -9,7 +9,7 @@ LumenGi::LumenGi(rhi::IDevice& device, const scene::Scene& scene, const GpuScene
       probes_(device, width, height, settings.probes) {}
 
 void LumenGi::record(FrameContext& frame, const DeferredRenderer& deferred, const scene::Camera& camera) {
-    sdf_.record(frame);
+    sdf_.record(frame, camera.position); // the global SDF's cascades follow the camera
     cache_.update(frame, deferred.shadowedLights());
     // Near-field hits read their cards' final lighting, far-field hits the cache's voxel lighting
     // (no volume of its own).
