@@ -7,9 +7,10 @@
 // shaders/sdf/sdf_scene_bindings.hlsli, bound by bindForTracing().
 //
 //   sdf::SceneSdf sdfs(device, scene);              // mesh SDFs built or loaded from the cache
-//   sdfs.record(frame);                             // composes the global SDF (all of it, first)
+//   sdfs.record(frame, camera.position);            // composes the global SDF (all of it, first)
 //   sdfs.setInstanceTransform(7, moved);            // later: one instance moves
-//   sdfs.record(frame);                             // recomposes only the bricks it touches
+//   sdfs.record(frame, camera.position);            // recomposes only the bricks it touches (and
+//                                                   // those the camera's move exposed)
 //   sdfs.bindForTracing(frame.compute("my pass", "my/kernel")).write(0, out).dispatch(n);
 //
 // A single-grid global SDF covers the instances' boxes at construction; an instance that later

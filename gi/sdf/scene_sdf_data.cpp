@@ -260,9 +260,42 @@ SceneSdfData buildSceneSdfData(const scene::Scene& scene, const SceneSdfSettings
             sceneBox.extend(instanceWorldBox(data.atlas.volumes[volume], instance.transform));
         }
     }
+    std::vector<float> sizes;
+    for (const scene::Instance& instance : scene.instances) {
+        const uint32_t volume = data.meshVolume[instance.mesh];
+        if (volume != kNoVolume) {
+            const glm::vec3 size = instanceWorldBox(data.atlas.volumes[volume], instance.transform).size();
+            sizes.push_back(std::max({size.x, size.y, size.z}));
+        }
+    }
+    if (!sizes.empty()) {
+        std::nth_element(sizes.begin(), sizes.begin() + sizes.size() / 2, sizes.end());
+        data.medianInstanceSize = sizes[sizes.size() / 2];
+    }
+    if (!(settings.globalCascadeBelowVoxelsPerInstance > 0.0f) ||
+        !(settings.globalFinestVoxelsPerInstance > 0.0f) || !(settings.globalFinestVoxelSize >= 0.0f)) {
+        throw std::invalid_argument("global SDF cascades: voxels per instance " +
+                                    std::to_string(settings.globalCascadeBelowVoxelsPerInstance) + " and " +
+                                    std::to_string(settings.globalFinestVoxelsPerInstance) +
+                                    " must be > 0, the finest voxel size " +
+                                    std::to_string(settings.globalFinestVoxelSize) + " >= 0");
+    }
+    uint32_t maxCascades = settings.globalCascades;
+    if (settings.globalFinestVoxelSize > 0.0f) {
+        data.finestVoxelWanted = settings.globalFinestVoxelSize;
+    } else {
+        const float fittedVoxel = globalGridFor(sceneBox, settings.globalResolution, settings.globalPadding,
+                                                settings.globalMaxDistanceVoxels)
+                                      .voxelSize;
+        data.finestVoxelWanted = data.medianInstanceSize / settings.globalFinestVoxelsPerInstance;
+        if (!(data.medianInstanceSize > 0.0f) ||
+            !(fittedVoxel * settings.globalCascadeBelowVoxelsPerInstance > data.medianInstanceSize)) {
+            maxCascades = 1; // fine enough (or no instance at all): the scene-fitted grid
+        }
+    }
     data.cascades = cascadeLayoutFor(sceneBox, settings.globalResolution, settings.globalPadding,
-                                     settings.globalMaxDistanceVoxels, settings.globalCascades,
-                                     settings.globalFinestVoxelSize);
+                                     settings.globalMaxDistanceVoxels, maxCascades,
+                                     data.finestVoxelWanted > 0.0f ? data.finestVoxelWanted : 1.0f);
     data.camera = scene.camera.position;
     data.global = cascadeGrid(data.cascades, 0, cascadeWindowFor(data.cascades, 0, data.camera));
     for (uint32_t i = 0; i < scene.instances.size(); ++i) {

@@ -27,13 +27,19 @@ struct SceneSdfSettings {
     // Global voxels along the longest axis of the scene, padding included, when one grid covers
     // it; per side of every cascade when the scene needs cascades (gi/sdf/global_sdf_cascades.h).
     uint32_t globalResolution = 64;
-    // Clipmap cascades: a scene whose scene-fitted grid has voxels coarser than
-    // globalFinestVoxelSize (world units, metres in the built-in scenes) gets cascades halving
-    // the voxel size from the fitted one towards it, at most globalCascades of them
-    // (<= LUMINA_SDF_MAX_CASCADES). The Cornell boxes and the atrium stay one grid; the city
-    // gets 4 of 64^3.
+    // Clipmap cascades (gi/sdf/global_sdf_cascades.h). The scene's detail is measured by its
+    // median instance (the longest side of its SDF volume's world box: a yardstick free of the
+    // scene's units). A scene whose scene-fitted grid gives that instance at least
+    // globalCascadeBelowVoxelsPerInstance voxels keeps that one grid (the Cornell boxes: 60,
+    // furnaces: 60, open_top_box: 13, atrium: 3.6); a coarser one (the city: 1.6) gets cascades
+    // halving the voxel size from the fitted one towards median / globalFinestVoxelsPerInstance,
+    // at most globalCascades (<= LUMINA_SDF_MAX_CASCADES) of globalResolution^3 voxels.
+    // globalFinestVoxelSize > 0 (world units) replaces both rules: cascades whenever the
+    // fitted voxel is coarser than it, towards it.
     uint32_t globalCascades = 4;
-    float globalFinestVoxelSize = 1.0f;
+    float globalCascadeBelowVoxelsPerInstance = 2.0f;
+    float globalFinestVoxelsPerInstance = 16.0f;
+    float globalFinestVoxelSize = 0.0f;
     uint32_t globalPadding = 2; // global voxels of margin around the instances' boxes
     // Truncation of the global SDF, in global voxels: distances are clamped to
     // +-maxDistance, which bounds the region one moved instance can change (and so the
@@ -79,7 +85,9 @@ struct SceneSdfData {
     // The finest cascade's grid with its window around the scene camera (the scene-fitted grid
     // for a single cascade); its voxel size sizes the open instances' shells.
     GlobalSdfSettings global;
-    glm::vec3 camera{0.0f}; // the scene camera's position: where the cascades start
+    glm::vec3 camera{0.0f};          // the scene camera's position: where the cascades start
+    float medianInstanceSize = 0.0f; // longest side of the median instance's world box
+    float finestVoxelWanted = 0.0f;  // the finest cascade voxel the settings asked for
     SceneSdfReport report;
 
     // The instance table as composeGlobalSdf takes it.
