@@ -30,10 +30,7 @@
 #error "define LUMINA_SDF_SCENE, LUMINA_SDF_INSTANCE and LUMINA_SDF_GLOBAL before including sdf_far_field.hlsli"
 #endif
 
-// Texel of window voxel `voxel` (0 <= voxel < dims) of a cascade: toroidal within its slab.
-float sdfGlobalTexel(SdfGlobalCascade cascade, int3 voxel) {
-    uint3 texel = (uint3(voxel) + cascade.wrapAndSlab.xyz) % cascade.dims.xyz;
-    texel.z += cascade.wrapAndSlab.w;
+float sdfGlobalTexel(uint3 texel) {
     return LUMINA_SDF_GLOBAL.Load(int4(int3(texel), 0)).x;
 }
 
@@ -83,14 +80,19 @@ float sdfSampleCascade(uint c, float3 p) {
     int3 base = min(int3(local), last);
     int3 next = min(base + 1, last);
     float3 f = local - float3(base);
-    float c00 = lerp(sdfGlobalTexel(cascade, int3(base.x, base.y, base.z)),
-                     sdfGlobalTexel(cascade, int3(next.x, base.y, base.z)), f.x);
-    float c10 = lerp(sdfGlobalTexel(cascade, int3(base.x, next.y, base.z)),
-                     sdfGlobalTexel(cascade, int3(next.x, next.y, base.z)), f.x);
-    float c01 = lerp(sdfGlobalTexel(cascade, int3(base.x, base.y, next.z)),
-                     sdfGlobalTexel(cascade, int3(next.x, base.y, next.z)), f.x);
-    float c11 = lerp(sdfGlobalTexel(cascade, int3(base.x, next.y, next.z)),
-                     sdfGlobalTexel(cascade, int3(next.x, next.y, next.z)), f.x);
+    // Toroidal texels of base and next, (voxel + wrap) mod dims: both terms lie in [0, dims), so
+    // one conditional subtraction does it, without an integer division per sample. With a single
+    // cascade the wrap is 0: the texels are base and next themselves.
+    uint3 b = uint3(base) + cascade.wrapAndSlab.xyz;
+    b -= cascade.dims.xyz * uint3(b >= cascade.dims.xyz);
+    uint3 n = uint3(next) + cascade.wrapAndSlab.xyz;
+    n -= cascade.dims.xyz * uint3(n >= cascade.dims.xyz);
+    b.z += cascade.wrapAndSlab.w;
+    n.z += cascade.wrapAndSlab.w;
+    float c00 = lerp(sdfGlobalTexel(uint3(b.x, b.y, b.z)), sdfGlobalTexel(uint3(n.x, b.y, b.z)), f.x);
+    float c10 = lerp(sdfGlobalTexel(uint3(b.x, n.y, b.z)), sdfGlobalTexel(uint3(n.x, n.y, b.z)), f.x);
+    float c01 = lerp(sdfGlobalTexel(uint3(b.x, b.y, n.z)), sdfGlobalTexel(uint3(n.x, b.y, n.z)), f.x);
+    float c11 = lerp(sdfGlobalTexel(uint3(b.x, n.y, n.z)), sdfGlobalTexel(uint3(n.x, n.y, n.z)), f.x);
     float sample = lerp(lerp(c00, c10, f.y), lerp(c01, c11, f.y), f.z);
     float3 outside = p - inBox;
     float outsideSquared = dot(outside, outside);
