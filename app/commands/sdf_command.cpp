@@ -53,10 +53,12 @@ void printBuildReport(const sdf::SceneSdfData& data, bool cacheUsed) {
     }
     std::printf(
         "mesh SDFs: %zu meshes, %u built (%llu voxels), %u loaded from cache (%llu voxels), %u sharing "
-        "another's, in %.3f s\n",
+        "another's, in %.3f s%s\n",
         report.meshes.size(), report.meshesBuilt, static_cast<unsigned long long>(report.voxelsBuilt),
         report.meshesLoaded, static_cast<unsigned long long>(report.voxelsLoaded), report.meshesShared,
-        report.meshSeconds);
+        report.meshSeconds,
+        report.buildThreads == 0 ? ""
+                                 : (" on " + std::to_string(report.buildThreads) + " thread(s)").c_str());
     if (report.voxelsBuilt == 0 && !report.meshes.empty()) {
         std::printf("mesh SDFs: loaded from cache, 0 voxels built\n");
     }
@@ -68,6 +70,19 @@ void printBuildReport(const sdf::SceneSdfData& data, bool cacheUsed) {
                 atlas.format == sdf::SdfTexelFormat::R16F ? "R16F" : "R32F",
                 double(atlas.byteSize()) / (1024.0 * 1024.0), report.packSeconds);
     std::printf("instances: %zu with an SDF\n", data.instances.size());
+    const sdf::GlobalSdfCascadeLayout& cascades = data.cascades;
+    const double globalMiB = double(sdf::cascadeBytes(cascades)) / (1024.0 * 1024.0);
+    std::printf("global SDF: %u cascade(s), %s (RG32F, %.2f MiB)", cascades.count,
+                sdf::describeCascades(cascades).c_str(), globalMiB);
+    if (cascades.scrolls()) {
+        std::printf(", following the camera; median instance %.4g, finest voxel wanted %.4g\n",
+                    data.medianInstanceSize, data.finestVoxelWanted);
+    } else {
+        std::printf(", scene-fitted; median instance %.4g\n", data.medianInstanceSize);
+    }
+    std::printf("SDF memory: %.2f MiB (atlas %.2f + global %.2f)\n",
+                double(atlas.byteSize()) / (1024.0 * 1024.0) + globalMiB,
+                double(atlas.byteSize()) / (1024.0 * 1024.0), globalMiB);
 }
 
 sdf::SdfField parseField(const std::string& name) {
@@ -120,6 +135,22 @@ void runBenchmark(rhi::IDevice& device, gi::PipelineCache& pipelines, const sdf:
     }
 }
 
+// Records the global SDF's compose for a camera at `camera` as frame `index`, submits it and
+// prints what it recomposed and its GPU time.
+void recordCompose(rhi::IDevice& device, gi::PipelineCache& pipelines, rhi::ICommandList& list,
+                   sdf::SceneSdf& sdfs, const glm::vec3& camera, uint64_t index) {
+    list.begin();
+    gi::FrameContext frame(pipelines, list, index);
+    sdfs.record(frame, camera);
+    list.end();
+    const std::vector<rhi::TimerResult> timers = submitAndWait(device, list);
+    const sdf::GlobalComposeStats& compose = sdfs.lastCompose();
+    std::printf("global SDF compose, camera (%.4g %.4g %.4g): %s, %u bricks (%llu voxels) in %.3f ms GPU\n",
+                camera.x, camera.y, camera.z, compose.reason.c_str(), compose.bricks,
+                static_cast<unsigned long long>(compose.voxels),
+                timers.empty() ? 0.0 : timers.front().milliseconds);
+}
+
 int runSdf(const ParsedArgs& args) {
     if (args.positional.size() != 1) {
         throw UsageError("sdf takes one scene: a built-in name or a scene path (see lumina sdf --help)");
@@ -159,20 +190,24 @@ int runSdf(const ParsedArgs& args) {
     std::printf("upload: %.3f s\n", secondsSince(uploadStart));
 
     rhi::CommandListHandle list = device->createCommandList();
-    list->begin();
-    gi::FrameContext frame(pipelines, *list, 0);
-    sdfs.record(frame);
-    list->end();
-    const std::vector<rhi::TimerResult> timers = submitAndWait(*device, *list);
     const sdf::GlobalSdfSettings& grid = sdfs.data().global;
-    const sdf::GlobalComposeStats& compose = sdfs.lastCompose();
-    std::printf(
-        "global SDF: %s voxels of %.4g (RG32F, %.2f MiB), truncated at %.4g: %s, %u bricks (%llu voxels) "
-        "in %.3f ms GPU\n",
-        dimsString(grid.dims).c_str(), grid.voxelSize,
-        double(grid.dims.x) * grid.dims.y * grid.dims.z * 8.0 / (1024.0 * 1024.0), grid.maxDistance,
-        compose.reason.c_str(), compose.bricks, static_cast<unsigned long long>(compose.voxels),
-        timers.empty() ? 0.0 : timers.front().milliseconds);
+    recordCompose(*device, pipelines, *list, sdfs, sdfs.data().camera, 0);
+    for (uint32_t c = 0; c < sdfs.data().cascades.count; ++c) {
+        const sdf::GlobalSdfSettings cascade = sdfs.cascadeGrid(c);
+        const glm::vec3 far = cascade.boundsMin + glm::vec3(cascade.dims) * cascade.voxelSize;
+        std::printf(
+            "  cascade %u: %s voxels of %.4g over (%.4g %.4g %.4g)-(%.4g %.4g %.4g), truncated at %.4g\n", c,
+            dimsString(cascade.dims).c_str(), cascade.voxelSize, cascade.boundsMin.x, cascade.boundsMin.y,
+            cascade.boundsMin.z, far.x, far.y, far.z, cascade.maxDistance);
+    }
+    if (args.has("camera-step")) {
+        // The camera walks along +x: what each step recomposes and what it costs.
+        const uint32_t voxels = uint32_t(args.getUint("camera-step", 4, 1, 1024));
+        const glm::vec3 step(float(voxels) * sdfs.data().cascades.finestVoxelSize, 0.0f, 0.0f);
+        for (uint32_t i = 1; i <= 4; ++i) {
+            recordCompose(*device, pipelines, *list, sdfs, sdfs.data().camera + float(i) * step, i);
+        }
+    }
 
     if (args.has("slice-png")) {
         const sdf::GlobalSdf global = sdf::readGlobalSdf(*device, sdfs);
@@ -220,28 +255,35 @@ Command sdfCommand() {
     return {
         .name = "sdf",
         .summary = "build a scene's mesh SDFs and global SDF; slice, normal view, trace benchmark",
-        .usage = "lumina sdf SCENE [--resolution N] [--global-resolution N] [--slice-png PATH] "
-                 "[--normals-png PATH] [--trace-bench] [--build-only] [--no-cache] [--size WxH]",
+        .usage =
+            "lumina sdf SCENE [--resolution N] [--global-resolution N] [--slice-png PATH] "
+            "[--normals-png PATH] [--trace-bench] [--camera-step N] [--build-only] [--no-cache] [--size WxH]",
         .description =
             "Builds every mesh SDF of SCENE (N voxels along each mesh's longest axis), or loads it from the "
             "cache ($LUMINA_CACHE_DIR/sdf, else the user cache folder), printing each mesh's time and the "
             "totals; a run that builds nothing prints 'loaded from cache, 0 voxels built'. Then packs the "
             "atlas, uploads it and composes the global SDF on the GPU (N voxels along the scene's longest "
-            "axis). --slice-png writes a z slice of the global SDF, --normals-png a normal view from the "
+            "axis, or clipmap cascades of N^3 around the scene camera for a scene too large for that), "
+            "printing its layout and the SDF memory (with --build-only too). --slice-png writes a z slice of "
+            "the global SDF (its finest cascade), --normals-png a normal view from the "
             "scene camera traced through the SDFs (--field near|far|cone), --trace-bench the GPU time and "
             "rays per second of camera rays traced through each field (--size, --frames). docs/sdf.md has "
             "the details and measured figures.",
-        .flags = {{"resolution", "N", "mesh SDF voxels along each mesh's longest axis (default 64)"},
-                  {"global-resolution", "N", "global SDF voxels along the scene's longest axis (default 64)"},
-                  {"slice-png", "PATH", "write a colour-mapped z slice of the global SDF"},
-                  {"slice-z", "N", "the slice's voxel index along z (default: the middle)"},
-                  {"normals-png", "PATH", "write the scene camera's normal view traced through the SDFs"},
-                  {"field", "NAME", "what --normals-png traces: near (default), far or cone"},
-                  {"trace-bench", "", "measure trace throughput (rays/s) of each field"},
-                  {"instances", "N", "building count of a generated city (default 1024)"},
-                  {"build-only", "", "stop after building the mesh SDFs (no GPU)"},
-                  {"no-cache", "", "build every mesh SDF, neither loading nor storing the cache"},
-                  {"r32f", "", "store the atlas as R32F instead of R16F"}},
+        .flags =
+            {{"resolution", "N", "mesh SDF voxels along each mesh's longest axis (default 64)"},
+             {"global-resolution", "N",
+              "global SDF voxels along the scene's longest axis, or per cascade side (default 64)"},
+             {"slice-png", "PATH", "write a colour-mapped z slice of the global SDF"},
+             {"slice-z", "N", "the slice's voxel index along z (default: the middle)"},
+             {"normals-png", "PATH", "write the scene camera's normal view traced through the SDFs"},
+             {"field", "NAME", "what --normals-png traces: near (default), far or cone"},
+             {"trace-bench", "", "measure trace throughput (rays/s) of each field"},
+             {"instances", "N", "building count of a generated city (default 1024)"},
+             {"camera-step", "N",
+              "then move the camera 4 times by N finest global voxels along +x, printing each recompose"},
+             {"build-only", "", "stop after building the mesh SDFs (no GPU)"},
+             {"no-cache", "", "build every mesh SDF, neither loading nor storing the cache"},
+             {"r32f", "", "store the atlas as R32F instead of R16F"}},
         .run = runSdf};
 }
 

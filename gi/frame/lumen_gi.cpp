@@ -11,8 +11,8 @@ LumenGi::LumenGi(rhi::IDevice& device, const scene::Scene& scene, const GpuScene
       afterProbes_(device.allocatedMemoryBytes()) {}
 
 void LumenGi::record(FrameContext& frame, const DeferredRenderer& deferred, const scene::Camera& camera) {
-    sdf_.record(frame);
-    cache_.update(frame, deferred.shadowedLights(), camera.position);
+    sdf_.record(frame, camera.position); // the global SDF's cascades follow the camera
+    cache_.update(frame, deferred.shadowedLights(), camera.position); // and the cards' LOD
     // Near-field hits read their cards' final lighting, far-field hits the cache's voxel lighting
     // (no volume of its own).
     const VoxelLighting cacheVoxels{};

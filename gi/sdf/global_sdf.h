@@ -40,6 +40,10 @@ struct GlobalSdfSettings {
     glm::uvec3 dims{32};
     float maxDistance = 1e30f;
     uint32_t threads = 0; // 0: hardware concurrency
+    // A cascade coarser than the finest (gi/sdf/global_sdf_cascades.h) grows open instances'
+    // shells by this much beyond SdfInstanceDesc::worldMax.w, which is sized for the finest.
+    // composeGlobalSdf sizes shells from voxelSize itself and does not read it.
+    float openShellExtra = 0.0f;
 };
 
 struct GlobalSdf {

@@ -13,7 +13,8 @@ glm::uvec3 brickDims(const GlobalSdfSettings& grid) {
 }
 
 float influenceMargin(const GlobalSdfSettings& grid, const gpu::SdfInstanceDesc& instance) {
-    return grid.maxDistance + instance.worldMax.w + grid.voxelSize;
+    const float shell = instance.worldMax.w > 0.0f ? instance.worldMax.w + grid.openShellExtra : 0.0f;
+    return grid.maxDistance + shell + grid.voxelSize;
 }
 
 BrickRange bricksTouched(const GlobalSdfSettings& grid, const bvh::Aabb& box, float margin) {

@@ -59,6 +59,10 @@ public:
     explicit GlobalSdfChangeTracker(const GlobalSdfSettings& grid) : grid_(grid) {}
 
     Changes update(std::span<const gpu::SdfInstanceDesc> instances);
+    // The grid moved (a scrolled cascade's window): later updates mark bricks of the new one.
+    // Instances' remembered boxes stay in world space, so they still name what a move changes.
+    void setGrid(const GlobalSdfSettings& grid) { grid_ = grid; }
+    const GlobalSdfSettings& grid() const { return grid_; }
     // The next update recomposes everything.
     void reset() { hashes_.clear(); }
 

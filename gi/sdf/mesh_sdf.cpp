@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <limits>
 #include <mutex>
 #include <numbers>
 #include <stdexcept>
@@ -114,6 +115,167 @@ MeshSdf sdfVolumeFor(const bvh::Aabb& meshBounds, const SdfSettings& settings) {
     return sdf;
 }
 
+namespace {
+
+// One mesh of a batch: its triangle BVH, its volume, and what its slices have added up.
+struct MeshJob {
+    bvh::Bvh bvh;
+    MeshSdf sdf;
+    std::atomic<uint64_t> raysCast{0};
+    std::atomic<uint64_t> workNanoseconds{0}; // summed over the threads that worked on it
+};
+
+// Whether the vote of a voxel centre outside the mesh's bounds is decided without casting:
+// beyond a face of the box, every direction pointing away from it (at least one of each
+// antipodal pair) misses, so at most half the votes can say "inside"; with insideVotesNeeded
+// above half, the voxel is outside, exactly what casting every ray would give.
+bool surelyOutside(const bvh::Aabb& bounds, const glm::vec3& p, uint32_t rays, uint32_t insideVotesNeeded) {
+    const bool beyondBox =
+        glm::any(glm::lessThan(p, bounds.min)) || glm::any(glm::greaterThan(p, bounds.max));
+    return beyondBox && 2 * insideVotesNeeded > rays;
+}
+
+// Voxels of z-slice z. Each row starts a fresh closest-point search, so that the result does
+// not depend on which thread took which slice (or on what it built before).
+void buildSlice(MeshJob& job, uint32_t z, const std::vector<glm::vec3>& directions,
+                uint32_t insideVotesNeeded) {
+    MeshSdf& sdf = job.sdf;
+    uint64_t rays = 0;
+    for (uint32_t y = 0; y < sdf.dims.y; ++y) {
+        float previous = -1.0f;
+        for (uint32_t x = 0; x < sdf.dims.x; ++x) {
+            const glm::vec3 p = sdf.voxelCentre(x, y, z);
+            // The previous voxel's distance plus the step bounds this one's.
+            float bound = std::numeric_limits<float>::infinity();
+            if (previous >= 0.0f) {
+                const float r = (previous + sdf.voxelSize) * (1.0f + kNeighbourBoundSlack);
+                bound = r * r;
+            }
+            bvh::ClosestPoint cp = bvh::closestPoint(job.bvh, p, bound);
+            if (!cp.found()) {
+                cp = bvh::closestPoint(job.bvh, p);
+            }
+            const float distance = std::sqrt(cp.distanceSquared);
+            previous = distance;
+            const bool inside =
+                !surelyOutside(job.bvh.bounds, p, uint32_t(directions.size()), insideVotesNeeded) &&
+                isInside(job.bvh, p, directions, insideVotesNeeded, rays);
+            sdf.distances[sdf.voxelIndex(x, y, z)] = inside ? -distance : distance;
+        }
+    }
+    job.raysCast += rays;
+}
+
+// Runs worker() on `count` threads (the caller's included) and rethrows the first exception.
+template <typename Worker>
+void runOnThreads(uint32_t count, Worker&& worker) {
+    std::exception_ptr error;
+    std::mutex errorMutex;
+    auto guarded = [&] {
+        try {
+            worker();
+        } catch (...) {
+            std::lock_guard lock(errorMutex);
+            if (!error) {
+                error = std::current_exception();
+            }
+        }
+    };
+    std::vector<std::jthread> threads;
+    for (uint32_t i = 1; i < count; ++i) {
+        threads.emplace_back(guarded);
+    }
+    guarded();
+    threads.clear(); // joins
+    if (error) {
+        std::rethrow_exception(error);
+    }
+}
+
+uint64_t nanosecondsSince(std::chrono::steady_clock::time_point start) {
+    return uint64_t(
+        std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - start)
+            .count());
+}
+
+} // namespace
+
+uint32_t sdfBuildThreads(const SdfSettings& settings) {
+    return settings.threads != 0 ? settings.threads : std::max(1u, std::thread::hardware_concurrency());
+}
+
+std::vector<MeshSdf> buildMeshSdfs(std::span<const MeshSdfInput> meshes, const SdfSettings& settings) {
+    validate(settings);
+    for (size_t m = 0; m < meshes.size(); ++m) {
+        if (meshes[m].indices.empty()) {
+            throw std::invalid_argument("buildMeshSdf: mesh " + std::to_string(m) +
+                                        " of the batch has no triangles");
+        }
+    }
+    const uint32_t threadCount = sdfBuildThreads(settings);
+    std::vector<MeshJob> jobs(meshes.size());
+
+    // Phase 1: one triangle BVH per mesh, meshes spread over the threads. Each BVH is built
+    // single-threaded here (the threads are busy with other meshes); a BVH's layout does not
+    // depend on its build's thread count.
+    std::atomic<uint32_t> nextMesh{0};
+    runOnThreads(std::min(threadCount, uint32_t(meshes.size())), [&] {
+        for (uint32_t m = nextMesh++; m < meshes.size(); m = nextMesh++) {
+            const auto start = std::chrono::steady_clock::now();
+            bvh::BvhBuildSettings bvhSettings;
+            bvhSettings.threads = meshes.size() == 1 ? threadCount : 1;
+            MeshJob& job = jobs[m];
+            job.bvh = bvh::buildBvh(meshes[m].positions, meshes[m].indices, bvhSettings);
+            job.sdf = sdfVolumeFor(job.bvh.bounds, settings);
+            job.sdf.stats.triangles = uint32_t(meshes[m].indices.size() / 3);
+            job.sdf.distances.resize(size_t(job.sdf.dims.x) * job.sdf.dims.y * job.sdf.dims.z);
+            job.workNanoseconds += nanosecondsSince(start);
+        }
+    });
+
+    // Phase 2: every mesh's z-slices in one queue, largest mesh first, so that the tail of a
+    // big mesh and the small ones keep every thread busy until the end.
+    std::vector<uint32_t> order(meshes.size());
+    for (uint32_t m = 0; m < order.size(); ++m) {
+        order[m] = m;
+    }
+    std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+        return jobs[a].sdf.distances.size() > jobs[b].sdf.distances.size();
+    });
+    std::vector<std::pair<uint32_t, uint32_t>> slices; // (mesh, z)
+    for (uint32_t m : order) {
+        for (uint32_t z = 0; z < jobs[m].sdf.dims.z; ++z) {
+            slices.emplace_back(m, z);
+        }
+    }
+    const std::vector<glm::vec3> directions = signRayDirections(settings.signRays);
+    const uint32_t insideVotesNeeded = std::min(
+        settings.signRays, uint32_t(std::floor(settings.insideFraction * float(settings.signRays))) + 1);
+    std::atomic<size_t> nextSlice{0};
+    runOnThreads(uint32_t(std::min<size_t>(threadCount, slices.size())), [&] {
+        for (size_t s = nextSlice++; s < slices.size(); s = nextSlice++) {
+            const auto start = std::chrono::steady_clock::now();
+            MeshJob& job = jobs[slices[s].first];
+            try {
+                buildSlice(job, slices[s].second, directions, insideVotesNeeded);
+            } catch (...) {
+                nextSlice = slices.size(); // the others stop early
+                throw;
+            }
+            job.workNanoseconds += nanosecondsSince(start);
+        }
+    });
+
+    std::vector<MeshSdf> out;
+    out.reserve(jobs.size());
+    for (MeshJob& job : jobs) {
+        job.sdf.stats.signRays = job.raysCast;
+        job.sdf.stats.seconds = double(job.workNanoseconds) * 1e-9;
+        out.push_back(std::move(job.sdf));
+    }
+    return out;
+}
+
 MeshSdf buildMeshSdf(std::span<const glm::vec3> positions, std::span<const uint32_t> indices,
                      const SdfSettings& settings) {
     const auto start = std::chrono::steady_clock::now();
@@ -121,71 +283,8 @@ MeshSdf buildMeshSdf(std::span<const glm::vec3> positions, std::span<const uint3
     if (indices.empty()) {
         throw std::invalid_argument("buildMeshSdf: the mesh has no triangles");
     }
-    bvh::BvhBuildSettings bvhSettings;
-    bvhSettings.threads = settings.threads;
-    const bvh::Bvh bvh = bvh::buildBvh(positions, indices, bvhSettings);
-
-    MeshSdf sdf = sdfVolumeFor(bvh.bounds, settings);
-    sdf.stats.triangles = uint32_t(indices.size() / 3);
-    sdf.distances.resize(size_t(sdf.dims.x) * sdf.dims.y * sdf.dims.z);
-
-    const std::vector<glm::vec3> directions = signRayDirections(settings.signRays);
-    const uint32_t insideVotesNeeded = std::min(
-        settings.signRays, uint32_t(std::floor(settings.insideFraction * float(settings.signRays))) + 1);
-
-    // Workers take whole z-slices. Each row starts a fresh search so that the result does
-    // not depend on which thread took which slice.
-    std::atomic<uint32_t> nextSlice{0};
-    std::atomic<uint64_t> raysCast{0};
-    std::exception_ptr error;
-    std::mutex errorMutex;
-    auto worker = [&] {
-        try {
-            uint64_t rays = 0;
-            for (uint32_t z = nextSlice++; z < sdf.dims.z; z = nextSlice++) {
-                for (uint32_t y = 0; y < sdf.dims.y; ++y) {
-                    float previous = -1.0f;
-                    for (uint32_t x = 0; x < sdf.dims.x; ++x) {
-                        const glm::vec3 p = sdf.voxelCentre(x, y, z);
-                        // The previous voxel's distance plus the step bounds this one's.
-                        float bound = std::numeric_limits<float>::infinity();
-                        if (previous >= 0.0f) {
-                            const float r = (previous + sdf.voxelSize) * (1.0f + kNeighbourBoundSlack);
-                            bound = r * r;
-                        }
-                        bvh::ClosestPoint cp = bvh::closestPoint(bvh, p, bound);
-                        if (!cp.found()) {
-                            cp = bvh::closestPoint(bvh, p);
-                        }
-                        const float distance = std::sqrt(cp.distanceSquared);
-                        previous = distance;
-                        const bool inside = isInside(bvh, p, directions, insideVotesNeeded, rays);
-                        sdf.distances[sdf.voxelIndex(x, y, z)] = inside ? -distance : distance;
-                    }
-                }
-            }
-            raysCast += rays;
-        } catch (...) {
-            std::lock_guard lock(errorMutex);
-            error = std::current_exception();
-            nextSlice = sdf.dims.z;
-        }
-    };
-    const uint32_t threadCount =
-        std::min(sdf.dims.z, settings.threads != 0 ? settings.threads
-                                                   : std::max(1u, std::thread::hardware_concurrency()));
-    std::vector<std::thread> threads;
-    for (uint32_t i = 1; i < threadCount; ++i) {
-        threads.emplace_back(worker);
-    }
-    worker();
-    for (std::thread& t : threads) {
-        t.join();
-    }
-    if (error) {
-        std::rethrow_exception(error);
-    }
-    sdf.stats.signRays = raysCast;
+    const MeshSdfInput input{positions, indices};
+    MeshSdf sdf = std::move(buildMeshSdfs(std::span(&input, 1), settings).front());
     sdf.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return sdf;
 }

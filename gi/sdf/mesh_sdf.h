@@ -63,6 +63,21 @@ struct MeshSdf {
 MeshSdf buildMeshSdf(std::span<const glm::vec3> positions, std::span<const uint32_t> indices,
                      const SdfSettings& settings = {});
 
+struct MeshSdfInput {
+    std::span<const glm::vec3> positions;
+    std::span<const uint32_t> indices;
+};
+
+// Several meshes at once (a scene's): the triangle BVHs spread over the threads, then every
+// mesh's z-slices from one shared queue, largest mesh first, so that no thread idles while
+// another finishes a big mesh. Each result is bit for bit what buildMeshSdf gives (a slice's
+// voxels never depend on the thread or on the slices before it); stats.seconds is the thread
+// time spent on that mesh. Throws std::invalid_argument for an empty mesh or bad settings.
+std::vector<MeshSdf> buildMeshSdfs(std::span<const MeshSdfInput> meshes, const SdfSettings& settings = {});
+
+// Threads a build uses: settings.threads, or std::thread::hardware_concurrency() when 0.
+uint32_t sdfBuildThreads(const SdfSettings& settings);
+
 // The volume a build would use (dims, volumeMin, voxelSize; no distances).
 MeshSdf sdfVolumeFor(const bvh::Aabb& meshBounds, const SdfSettings& settings);
 

@@ -50,8 +50,14 @@ void ensureCapacity(rhi::IDevice& device, rhi::BufferHandle& buffer, size_t coun
 SceneSdf::SceneSdf(rhi::IDevice& device, const scene::Scene& scene, const SceneSdfSettings& settings)
     : SceneSdf(device, buildSceneSdfData(scene, settings)) {}
 
-SceneSdf::SceneSdf(rhi::IDevice& device, SceneSdfData data)
-    : device_(device), data_(std::move(data)), tracker_(data_.global) {
+SceneSdf::SceneSdf(rhi::IDevice& device, SceneSdfData data) : device_(device), data_(std::move(data)) {
+    // The cascades start where buildSceneSdfData placed the finest one: around the scene camera.
+    const GlobalSdfCascadeLayout& layout = data_.cascades;
+    camera_ = data_.camera;
+    for (uint32_t c = 0; c < layout.count; ++c) {
+        windows_.push_back(cascadeWindowFor(layout, c, camera_));
+        trackers_.emplace_back(sdf::cascadeGrid(layout, c, windows_.back()));
+    }
     bvh_ = buildInstanceBvh(worldBoxes(data_.instances));
     for (uint32_t i = 0; i < data_.instances.size(); ++i) {
         const uint32_t sceneInstance = data_.instances[i].ids.z;
@@ -85,12 +91,13 @@ SceneSdf::SceneSdf(rhi::IDevice& device, SceneSdfData data)
     sceneInfo_ = rhi::createBufferWithData(
         device, {.size = sizeof(info), .usage = rhi::BufferUsage::Constant, .debugName = "sdf scene info"},
         &info, sizeof(info));
-    const glm::uvec3 dims = data_.global.dims;
+    // Every cascade's slab, one above the other along z.
+    const glm::uvec3 dims = layout.dims;
     global_ = device.createTexture({.dimension = rhi::TextureDimension::Texture3D,
                                     .format = rhi::Format::RG32_FLOAT,
                                     .width = dims.x,
                                     .height = dims.y,
-                                    .depth = dims.z,
+                                    .depth = dims.z * layout.count,
                                     .usage = rhi::TextureUsage::Sampled | rhi::TextureUsage::Storage,
                                     .debugName = "global sdf"});
     linearClamp_ = device.createSampler({.minFilter = rhi::Filter::Linear,
@@ -120,7 +127,9 @@ void SceneSdf::syncTransforms(const scene::Scene& scene) {
 }
 
 void SceneSdf::invalidateGlobalSdf() {
-    tracker_.reset();
+    for (GlobalSdfChangeTracker& tracker : trackers_) {
+        tracker.reset();
+    }
 }
 
 void SceneSdf::uploadTables(rhi::ICommandList& commands) {
@@ -132,22 +141,74 @@ void SceneSdf::uploadTables(rhi::ICommandList& commands) {
     commands.writeBuffer(*instanceList_, bvh_.instances.data(), bvh_.instances.size() * sizeof(uint32_t));
 }
 
-void SceneSdf::record(gi::FrameContext& frame) {
+void SceneSdf::record(gi::FrameContext& frame, const glm::vec3& camera) {
+    camera_ = camera;
     if (tablesDirty_ && !data_.instances.empty()) {
         uploadTables(frame.commands());
     }
     tablesDirty_ = false;
-    GlobalSdfChangeTracker::Changes changes = tracker_.update(data_.instances);
+    const GlobalSdfCascadeLayout& layout = data_.cascades;
     lastCompose_ = {};
-    lastCompose_.full = changes.full;
-    lastCompose_.changedInstances = changes.changedInstances;
-    lastCompose_.reason = changes.reason;
-    if (changes.dirtyBrickCount == 0) {
+    ComposeBatch batch;
+    bool windowsMoved = false;
+    std::string scrolled;
+    for (uint32_t c = 0; c < layout.count; ++c) {
+        const glm::ivec3 window = cascadeWindowFor(layout, c, camera);
+        const GlobalSdfSettings grid = sdf::cascadeGrid(layout, c, window);
+        GlobalSdfChangeTracker& tracker = trackers_[c];
+        tracker.setGrid(grid);
+        GlobalSdfChangeTracker::Changes changes = tracker.update(data_.instances);
+        if (window != windows_[c]) {
+            // The bricks that were outside the old window hold another part of the lattice.
+            uint32_t exposed = 0;
+            const std::vector<uint8_t> fresh = exposedBricks(layout, windows_[c], window, &exposed);
+            for (size_t b = 0; b < fresh.size(); ++b) {
+                changes.dirtyBricks[b] |= fresh[b];
+            }
+            changes.dirtyBrickCount =
+                uint32_t(std::count(changes.dirtyBricks.begin(), changes.dirtyBricks.end(), 1));
+            lastCompose_.scrolledCascades.push_back(c);
+            lastCompose_.exposedBricks += exposed;
+            scrolled += (scrolled.empty() ? "" : ", ") + std::to_string(c) + " (" + std::to_string(exposed) +
+                        " bricks exposed)";
+            windows_[c] = window;
+            windowsMoved = true;
+        }
+        if (c == 0) {
+            lastCompose_.full = changes.full;
+            lastCompose_.changedInstances = changes.changedInstances;
+            lastCompose_.reason = changes.reason;
+        }
+        if (changes.dirtyBrickCount == 0) {
+            continue;
+        }
+        // This cascade's bricks join the dispatch, their lists after the previous cascades'.
+        ComposeBatch part = makeComposeBatch(grid, data_.instances, changes.dirtyBricks);
+        const uint32_t listOffset = uint32_t(batch.brickInstances.size());
+        for (gpu::GlobalSdfBrick& brick : part.bricks) {
+            brick.coordAndInstances.y += listOffset;
+            brick.coordAndInstances.w = c;
+        }
+        batch.bricks.insert(batch.bricks.end(), part.bricks.begin(), part.bricks.end());
+        batch.brickInstances.insert(batch.brickInstances.end(), part.brickInstances.begin(),
+                                    part.brickInstances.end());
+        batch.voxels += part.voxels;
+    }
+    if (!scrolled.empty()) {
+        lastCompose_.reason += "; cascade(s) scrolled: " + scrolled;
+    } else if (layout.scrolls()) {
+        lastCompose_.reason += ", no cascade scrolled";
+    }
+    rhi::ICommandList& commands = frame.commands();
+    if (windowsMoved) {
+        const gpu::SdfSceneInfo info = sceneInfo();
+        commands.writeBuffer(*sceneInfo_, &info, sizeof(info));
+    }
+    if (batch.bricks.empty()) {
         lastCompose_.skipped = true;
-        frame.skip(kComposePassName, changes.reason);
+        frame.skip(kComposePassName, lastCompose_.reason);
         return;
     }
-    ComposeBatch batch = makeComposeBatch(data_.global, data_.instances, changes.dirtyBricks);
     lastCompose_.bricks = uint32_t(batch.bricks.size());
     lastCompose_.voxels = batch.voxels;
     if (batch.brickInstances.empty()) {
@@ -156,7 +217,6 @@ void SceneSdf::record(gi::FrameContext& frame) {
     ensureCapacity<gpu::GlobalSdfBrick>(device_, bricks_, batch.bricks.size(), "sdf compose bricks");
     ensureCapacity<uint32_t>(device_, brickInstances_, batch.brickInstances.size(),
                              "sdf compose brick instances");
-    rhi::ICommandList& commands = frame.commands();
     commands.writeBuffer(*bricks_, batch.bricks.data(), batch.bricks.size() * sizeof(gpu::GlobalSdfBrick));
     commands.writeBuffer(*brickInstances_, batch.brickInstances.data(),
                          batch.brickInstances.size() * sizeof(uint32_t));

@@ -7,13 +7,15 @@
 // shaders/sdf/sdf_scene_bindings.hlsli, bound by bindForTracing().
 //
 //   sdf::SceneSdf sdfs(device, scene);              // mesh SDFs built or loaded from the cache
-//   sdfs.record(frame);                             // composes the global SDF (all of it, first)
+//   sdfs.record(frame, camera.position);            // composes the global SDF (all of it, first)
 //   sdfs.setInstanceTransform(7, moved);            // later: one instance moves
-//   sdfs.record(frame);                             // recomposes only the bricks it touches
+//   sdfs.record(frame, camera.position);            // recomposes only the bricks it touches (and
+//                                                   // those the camera's move exposed)
 //   sdfs.bindForTracing(frame.compute("my pass", "my/kernel")).write(0, out).dispatch(n);
 //
-// The global grid covers the instances' boxes at construction; an instance that later moves
-// outside it is clipped (rebuild the SceneSdf for a scene whose extent changes).
+// A single-grid global SDF covers the instances' boxes at construction; an instance that later
+// moves outside it is clipped. Cascades follow the camera within the scene's initial box
+// (gi/sdf/global_sdf_cascades.h): pass the camera to record().
 #include "gi/core/frame_context.h"
 #include "gi/sdf/global_sdf_bricks.h"
 #include "gi/sdf/instance_bvh.h"
@@ -32,8 +34,10 @@ struct GlobalComposeStats {
     bool full = false;
     uint32_t changedInstances = 0;
     uint32_t bricks = 0;
-    uint64_t voxels = 0; // voxels recomposed (inside the grid)
-    std::string reason;  // "first compose", "1 instance(s) moved", "no instance moved", ...
+    uint64_t voxels = 0;                    // voxels recomposed (inside the grid)
+    std::vector<uint32_t> scrolledCascades; // cascades whose window moved with the camera
+    uint32_t exposedBricks = 0;             // bricks those moves exposed
+    std::string reason; // "first compose", "1 instance(s) moved", "no instance moved", ...
 };
 
 class SceneSdf {
@@ -51,10 +55,13 @@ public:
     // The next record() recomposes the whole global SDF.
     void invalidateGlobalSdf();
 
-    // Uploads the instance table and BVH if instances moved, then composes the global SDF
-    // bricks the changes touched (everything the first time); a frame with nothing to do
-    // records the compose pass as skipped, with the reason.
-    void record(gi::FrameContext& frame);
+    // Uploads the instance table and BVH if instances moved, moves the cascades' windows to the
+    // camera, then composes the global SDF bricks the changes touched and the windows' moves
+    // exposed (everything the first time); a frame with nothing to do records the compose pass
+    // as skipped, with the reason. Without a camera, the last one given (at first the scene
+    // camera) places the cascades. A single cascade never moves.
+    void record(gi::FrameContext& frame, const glm::vec3& camera);
+    void record(gi::FrameContext& frame) { record(frame, camera_); }
 
     // Binds the registers of shaders/sdf/sdf_scene_bindings.hlsli: b0 scene info, t0 atlas,
     // t1 volumes, t2 instances, t3 instance BVH nodes, t4 instance list, t5 global SDF, s0
@@ -68,7 +75,12 @@ public:
     const SceneSdfData& data() const { return data_; }
     const InstanceBvh& instanceBvh() const { return bvh_; }
     const GlobalComposeStats& lastCompose() const { return lastCompose_; }
-    gpu::SdfSceneInfo sceneInfo() const { return data_.sceneInfo(uint32_t(bvh_.nodes.size())); }
+    gpu::SdfSceneInfo sceneInfo() const { return data_.sceneInfo(uint32_t(bvh_.nodes.size()), windows_); }
+    // Cascade c's window (lattice voxel of its corner) and grid as the last record() left them.
+    const std::vector<glm::ivec3>& cascadeWindows() const { return windows_; }
+    GlobalSdfSettings cascadeGrid(uint32_t cascade) const {
+        return sdf::cascadeGrid(data_.cascades, cascade, windows_.at(cascade));
+    }
 
     rhi::TextureHandle atlas() const { return atlas_; }
     rhi::TextureHandle globalSdf() const { return global_; }
@@ -80,8 +92,10 @@ private:
     rhi::IDevice& device_;
     SceneSdfData data_;
     InstanceBvh bvh_;
-    std::vector<uint32_t> tableIndex_; // scene instance -> table entry, or kNoVolume
-    GlobalSdfChangeTracker tracker_;
+    std::vector<uint32_t> tableIndex_;             // scene instance -> table entry, or kNoVolume
+    std::vector<GlobalSdfChangeTracker> trackers_; // one per cascade
+    std::vector<glm::ivec3> windows_;              // per cascade, where its texels hold values
+    glm::vec3 camera_{0.0f};
     bool tablesDirty_ = false;
     GlobalComposeStats lastCompose_;
 

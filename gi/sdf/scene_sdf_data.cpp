@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -91,13 +92,32 @@ std::vector<SdfInstance> SceneSdfData::composeInstances() const {
     return out;
 }
 
-gpu::SdfSceneInfo SceneSdfData::sceneInfo(uint32_t instanceBvhNodes) const {
+gpu::SdfSceneInfo SceneSdfData::sceneInfo(uint32_t instanceBvhNodes,
+                                          std::span<const glm::ivec3> windows) const {
+    if (windows.size() != cascades.count) {
+        throw std::invalid_argument("SceneSdfData::sceneInfo: " + std::to_string(windows.size()) +
+                                    " windows for " + std::to_string(cascades.count) + " cascades");
+    }
     gpu::SdfSceneInfo info{};
     info.invAtlasDims = atlas.info().invAtlasDims;
-    info.globalMinAndVoxelSize = glm::vec4(global.boundsMin, global.voxelSize);
-    info.globalMaxAndMaxDistance =
-        glm::vec4(global.boundsMin + glm::vec3(global.dims) * global.voxelSize, global.maxDistance);
-    info.globalDims = glm::uvec4(global.dims, 0u);
+    bvh::Aabb covered;
+    for (uint32_t c = 0; c < cascades.count; ++c) {
+        const GlobalSdfSettings grid = cascadeGrid(cascades, c, windows[c]);
+        const glm::vec3 gridMax = grid.boundsMin + glm::vec3(grid.dims) * grid.voxelSize;
+        covered.extend(grid.boundsMin);
+        covered.extend(gridMax);
+        gpu::SdfGlobalCascade& cascade = info.cascades[c];
+        cascade.minAndVoxelSize = glm::vec4(grid.boundsMin, grid.voxelSize);
+        cascade.maxAndMaxDistance = glm::vec4(gridMax, grid.maxDistance);
+        cascade.latticeOriginAndShell = glm::vec4(cascades.latticeOrigin, grid.openShellExtra);
+        cascade.window = glm::uvec4(glm::uvec3(windows[c]), 0u); // int bits
+        cascade.wrapAndSlab = glm::uvec4(cascadeTexel(cascades, windows[c], glm::uvec3(0)), c * grid.dims.z);
+        cascade.dims = glm::uvec4(grid.dims, 0u);
+    }
+    const GlobalSdfSettings finest = cascadeGrid(cascades, 0, windows[0]);
+    info.globalMinAndVoxelSize = glm::vec4(covered.min, finest.voxelSize);
+    info.globalMaxAndMaxDistance = glm::vec4(covered.max, finest.maxDistance);
+    info.globalDims = glm::uvec4(cascades.dims, cascades.count);
     info.counts =
         glm::uvec4(uint32_t(instances.size()), instanceBvhNodes, uint32_t(atlas.volumes.size()), 0u);
     return info;
@@ -142,6 +162,8 @@ SceneSdfData buildSceneSdfData(const scene::Scene& scene, const SceneSdfSettings
     data.meshVolume.assign(scene.meshes.size(), kNoVolume);
     std::unordered_map<uint64_t, uint32_t> volumeByKey;
     std::vector<MeshSdfReport> sharedLines; // appended after the built and loaded ones
+    std::vector<uint32_t> toBuild;          // volumes the cache did not have
+    std::vector<uint64_t> toBuildKeys;
     for (uint32_t m = 0; m < scene.meshes.size(); ++m) {
         const scene::Mesh& mesh = scene.meshes[m];
         if (!used[m] || mesh.indices.empty()) {
@@ -153,10 +175,7 @@ SceneSdfData buildSceneSdfData(const scene::Scene& scene, const SceneSdfSettings
         // Meshes of identical geometry (the atrium's three drapes) share one volume.
         const uint64_t key = SdfCache::key(mesh.positions, mesh.indices, settings.mesh);
         if (const auto same = volumeByKey.find(key); same != volumeByKey.end()) {
-            const MeshSdf& shared = sdfs[same->second];
-            line.sharedWith = data.report.meshes[same->second].mesh;
-            line.dims = shared.dims;
-            line.triangles = shared.stats.triangles;
+            line.sharedWith = data.report.meshes[same->second].mesh; // dims filled in once built
             data.meshVolume[m] = same->second;
             ++data.report.meshesShared;
             sharedLines.push_back(std::move(line));
@@ -165,25 +184,55 @@ SceneSdfData buildSceneSdfData(const scene::Scene& scene, const SceneSdfSettings
         volumeByKey.emplace(key, uint32_t(sdfs.size()));
         MeshSdf sdf;
         if (settings.useCache) {
-            SdfCacheReport cacheReport;
-            sdf = cache.getOrBuild(mesh.positions, mesh.indices, settings.mesh, &cacheReport);
-            line.fromCache = cacheReport.fromCache;
-            line.seconds = cacheReport.seconds;
-            line.note = cacheReport.note;
+            const Clock::time_point loadStart = Clock::now();
+            if (std::optional<MeshSdf> cached = cache.load(key, &line.note)) {
+                sdf = std::move(*cached);
+                line.fromCache = true;
+                line.note.clear();
+                line.seconds = secondsSince(loadStart);
+            }
         } else {
-            sdf = buildMeshSdf(mesh.positions, mesh.indices, settings.mesh);
-            line.seconds = sdf.stats.seconds;
             line.note = "cache off";
         }
-        line.dims = sdf.dims;
-        line.triangles = sdf.stats.triangles;
-        const uint64_t voxels = uint64_t(sdf.dims.x) * sdf.dims.y * sdf.dims.z;
-        (line.fromCache ? data.report.voxelsLoaded : data.report.voxelsBuilt) += voxels;
-        ++(line.fromCache ? data.report.meshesLoaded : data.report.meshesBuilt);
+        if (!line.fromCache) {
+            toBuild.push_back(uint32_t(sdfs.size()));
+            toBuildKeys.push_back(key);
+        }
         data.meshVolume[m] = uint32_t(sdfs.size());
         sdfs.push_back(std::move(sdf));
         data.report.meshes.push_back(std::move(line));
     }
+    // Everything the cache did not have, built as one batch (buildMeshSdfs: all threads on all
+    // meshes' slices), then stored.
+    std::vector<MeshSdfInput> inputs;
+    for (uint32_t v : toBuild) {
+        const scene::Mesh& mesh = scene.meshes[data.report.meshes[v].mesh];
+        inputs.push_back({mesh.positions, mesh.indices});
+    }
+    std::vector<MeshSdf> built = buildMeshSdfs(inputs, settings.mesh);
+    for (size_t b = 0; b < toBuild.size(); ++b) {
+        MeshSdfReport& line = data.report.meshes[toBuild[b]];
+        line.seconds = built[b].stats.seconds;
+        std::string storeError;
+        if (settings.useCache && !cache.store(toBuildKeys[b], built[b], &storeError)) {
+            line.note += "; not stored: " + storeError;
+        }
+        sdfs[toBuild[b]] = std::move(built[b]);
+    }
+    for (uint32_t v = 0; v < sdfs.size(); ++v) {
+        MeshSdfReport& line = data.report.meshes[v];
+        line.dims = sdfs[v].dims;
+        line.triangles = sdfs[v].stats.triangles;
+        const uint64_t voxels = uint64_t(sdfs[v].dims.x) * sdfs[v].dims.y * sdfs[v].dims.z;
+        (line.fromCache ? data.report.voxelsLoaded : data.report.voxelsBuilt) += voxels;
+        ++(line.fromCache ? data.report.meshesLoaded : data.report.meshesBuilt);
+    }
+    for (MeshSdfReport& line : sharedLines) {
+        const MeshSdf& shared = sdfs[data.meshVolume[line.mesh]];
+        line.dims = shared.dims;
+        line.triangles = shared.stats.triangles;
+    }
+    data.report.buildThreads = toBuild.empty() ? 0 : sdfBuildThreads(settings.mesh);
     data.report.meshSeconds = secondsSince(meshStart);
     // report.meshes[v] is volume v's own line up to here; then the sharing meshes.
     data.report.meshes.insert(data.report.meshes.end(), sharedLines.begin(), sharedLines.end());
@@ -211,8 +260,44 @@ SceneSdfData buildSceneSdfData(const scene::Scene& scene, const SceneSdfSettings
             sceneBox.extend(instanceWorldBox(data.atlas.volumes[volume], instance.transform));
         }
     }
-    data.global = globalGridFor(sceneBox, settings.globalResolution, settings.globalPadding,
-                                settings.globalMaxDistanceVoxels);
+    std::vector<float> sizes;
+    for (const scene::Instance& instance : scene.instances) {
+        const uint32_t volume = data.meshVolume[instance.mesh];
+        if (volume != kNoVolume) {
+            const glm::vec3 size = instanceWorldBox(data.atlas.volumes[volume], instance.transform).size();
+            sizes.push_back(std::max({size.x, size.y, size.z}));
+        }
+    }
+    if (!sizes.empty()) {
+        std::nth_element(sizes.begin(), sizes.begin() + sizes.size() / 2, sizes.end());
+        data.medianInstanceSize = sizes[sizes.size() / 2];
+    }
+    if (!(settings.globalCascadeBelowVoxelsPerInstance > 0.0f) ||
+        !(settings.globalFinestVoxelsPerInstance > 0.0f) || !(settings.globalFinestVoxelSize >= 0.0f)) {
+        throw std::invalid_argument("global SDF cascades: voxels per instance " +
+                                    std::to_string(settings.globalCascadeBelowVoxelsPerInstance) + " and " +
+                                    std::to_string(settings.globalFinestVoxelsPerInstance) +
+                                    " must be > 0, the finest voxel size " +
+                                    std::to_string(settings.globalFinestVoxelSize) + " >= 0");
+    }
+    uint32_t maxCascades = settings.globalCascades;
+    if (settings.globalFinestVoxelSize > 0.0f) {
+        data.finestVoxelWanted = settings.globalFinestVoxelSize;
+    } else {
+        const float fittedVoxel = globalGridFor(sceneBox, settings.globalResolution, settings.globalPadding,
+                                                settings.globalMaxDistanceVoxels)
+                                      .voxelSize;
+        data.finestVoxelWanted = data.medianInstanceSize / settings.globalFinestVoxelsPerInstance;
+        if (!(data.medianInstanceSize > 0.0f) ||
+            !(fittedVoxel * settings.globalCascadeBelowVoxelsPerInstance > data.medianInstanceSize)) {
+            maxCascades = 1; // fine enough (or no instance at all): the scene-fitted grid
+        }
+    }
+    data.cascades = cascadeLayoutFor(sceneBox, settings.globalResolution, settings.globalPadding,
+                                     settings.globalMaxDistanceVoxels, maxCascades,
+                                     data.finestVoxelWanted > 0.0f ? data.finestVoxelWanted : 1.0f);
+    data.camera = scene.camera.position;
+    data.global = cascadeGrid(data.cascades, 0, cascadeWindowFor(data.cascades, 0, data.camera));
     for (uint32_t i = 0; i < scene.instances.size(); ++i) {
         const scene::Instance& instance = scene.instances[i];
         const uint32_t volume = data.meshVolume[instance.mesh];

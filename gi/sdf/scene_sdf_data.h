@@ -6,6 +6,7 @@
 #include "gi/bvh/bvh.h"
 #include "gi/scene/scene.h"
 #include "gi/sdf/global_sdf.h"
+#include "gi/sdf/global_sdf_cascades.h"
 #include "gi/sdf/mesh_sdf.h"
 #include "gi/sdf/sdf_atlas.h"
 #include "shaders/common/sdf_scene_shared.h"
@@ -23,8 +24,23 @@ inline constexpr uint32_t kNoVolume = 0xFFFFFFFFu;
 struct SceneSdfSettings {
     SdfSettings mesh; // per-mesh build: 64 voxels along the longest axis by default
     SdfTexelFormat atlasFormat = SdfTexelFormat::R16F;
-    uint32_t globalResolution = 64; // global voxels along the longest axis of the scene, padding included
-    uint32_t globalPadding = 2;     // global voxels of margin around the instances' boxes
+    // Global voxels along the longest axis of the scene, padding included, when one grid covers
+    // it; per side of every cascade when the scene needs cascades (gi/sdf/global_sdf_cascades.h).
+    uint32_t globalResolution = 64;
+    // Clipmap cascades (gi/sdf/global_sdf_cascades.h). The scene's detail is measured by its
+    // median instance (the longest side of its SDF volume's world box: a yardstick free of the
+    // scene's units). A scene whose scene-fitted grid gives that instance at least
+    // globalCascadeBelowVoxelsPerInstance voxels keeps that one grid (the Cornell boxes: 60,
+    // furnaces: 60, open_top_box: 13, atrium: 3.6); a coarser one (the city: 1.6) gets cascades
+    // halving the voxel size from the fitted one towards median / globalFinestVoxelsPerInstance,
+    // at most globalCascades (<= LUMINA_SDF_MAX_CASCADES) of globalResolution^3 voxels.
+    // globalFinestVoxelSize > 0 (world units) replaces both rules: cascades whenever the
+    // fitted voxel is coarser than it, towards it.
+    uint32_t globalCascades = 4;
+    float globalCascadeBelowVoxelsPerInstance = 2.0f;
+    float globalFinestVoxelsPerInstance = 16.0f;
+    float globalFinestVoxelSize = 0.0f;
+    uint32_t globalPadding = 2; // global voxels of margin around the instances' boxes
     // Truncation of the global SDF, in global voxels: distances are clamped to
     // +-maxDistance, which bounds the region one moved instance can change (and so the
     // incremental recompose) and the far-field tracer's step.
@@ -38,7 +54,7 @@ struct MeshSdfReport {
     std::string name;
     glm::uvec3 dims{0};
     uint32_t triangles = 0;
-    double seconds = 0.0; // build, or load from the cache
+    double seconds = 0.0; // load from the cache, or build: thread time spent on this mesh
     bool fromCache = false;
     bool open = false;               // LUMINA_SDF_VOLUME_OPEN: boundary edges or no negative voxel
     uint32_t sharedWith = kNoVolume; // a mesh of identical geometry whose volume this one uses
@@ -54,7 +70,8 @@ struct SceneSdfReport {
     uint32_t meshesShared = 0; // neither built nor loaded: identical to an earlier mesh
     uint64_t voxelsBuilt = 0;  // zero when every SDF came from the cache
     uint64_t voxelsLoaded = 0;
-    double meshSeconds = 0.0; // building or loading all mesh SDFs
+    double meshSeconds = 0.0;  // building or loading all mesh SDFs (wall time)
+    uint32_t buildThreads = 0; // threads the build used (sdfBuildThreads); 0 when nothing was built
     double packSeconds = 0.0;
 };
 
@@ -64,12 +81,19 @@ struct SceneSdfData {
     // One per scene instance whose mesh has a volume, in scene order; instance ids in the
     // global SDF and the instance BVH index this table.
     std::vector<gpu::SdfInstanceDesc> instances;
-    GlobalSdfSettings global; // grid layout and truncation of the global SDF
+    GlobalSdfCascadeLayout cascades; // the global SDF's cascades (one: the scene-fitted grid)
+    // The finest cascade's grid with its window around the scene camera (the scene-fitted grid
+    // for a single cascade); its voxel size sizes the open instances' shells.
+    GlobalSdfSettings global;
+    glm::vec3 camera{0.0f};          // the scene camera's position: where the cascades start
+    float medianInstanceSize = 0.0f; // longest side of the median instance's world box
+    float finestVoxelWanted = 0.0f;  // the finest cascade voxel the settings asked for
     SceneSdfReport report;
 
     // The instance table as composeGlobalSdf takes it.
     std::vector<SdfInstance> composeInstances() const;
-    gpu::SdfSceneInfo sceneInfo(uint32_t instanceBvhNodes) const;
+    // The constant buffer of the tracing library for the cascades' current windows.
+    gpu::SdfSceneInfo sceneInfo(uint32_t instanceBvhNodes, std::span<const glm::ivec3> windows) const;
 };
 
 // Throws std::invalid_argument for bad settings; a scene without triangles gives an empty

@@ -83,25 +83,41 @@ image::Image SdfCameraTracer::readNormals(rhi::IDevice& device) const {
     return out;
 }
 
-GlobalSdf readGlobalSdf(rhi::IDevice& device, const SceneSdf& sdfs) {
-    const GlobalSdfSettings& settings = sdfs.data().global;
+GlobalSdf readGlobalSdf(rhi::IDevice& device, const SceneSdf& sdfs, uint32_t cascade) {
+    const GlobalSdfCascadeLayout& layout = sdfs.data().cascades;
+    if (cascade >= layout.count) {
+        throw std::invalid_argument("readGlobalSdf: cascade " + std::to_string(cascade) + " of " +
+                                    std::to_string(layout.count));
+    }
+    const GlobalSdfSettings settings = sdfs.cascadeGrid(cascade);
+    const glm::ivec3 window = sdfs.cascadeWindows()[cascade];
     GlobalSdf grid;
     grid.dims = settings.dims;
     grid.boundsMin = settings.boundsMin;
     grid.voxelSize = settings.voxelSize;
     const std::vector<uint8_t> bytes = rhi::readTexture(device, *sdfs.globalSdf());
     const size_t voxels = size_t(grid.dims.x) * grid.dims.y * grid.dims.z;
-    if (bytes.size() != voxels * 2 * sizeof(float)) {
+    if (bytes.size() != voxels * layout.count * 2 * sizeof(float)) {
         throw std::runtime_error("readGlobalSdf: read " + std::to_string(bytes.size()) + " bytes for " +
-                                 std::to_string(voxels) + " RG32F voxels");
+                                 std::to_string(layout.count) + " cascade(s) of " + std::to_string(voxels) +
+                                 " RG32F voxels");
     }
     grid.distances.resize(voxels);
     grid.instances.resize(voxels);
-    for (size_t i = 0; i < voxels; ++i) {
-        float texel[2];
-        std::memcpy(texel, bytes.data() + i * sizeof(texel), sizeof(texel));
-        grid.distances[i] = texel[0];
-        grid.instances[i] = texel[1] >= 0.0f ? uint32_t(texel[1]) : kNoInstance;
+    // Unwrapped from the cascade's toroidal slab into window order.
+    for (uint32_t z = 0; z < grid.dims.z; ++z) {
+        for (uint32_t y = 0; y < grid.dims.y; ++y) {
+            for (uint32_t x = 0; x < grid.dims.x; ++x) {
+                const glm::uvec3 texel = cascadeTexel(layout, window, {x, y, z});
+                const size_t t =
+                    (size_t(texel.z + cascade * grid.dims.z) * grid.dims.y + texel.y) * grid.dims.x + texel.x;
+                float value[2];
+                std::memcpy(value, bytes.data() + t * sizeof(value), sizeof(value));
+                const size_t i = grid.voxelIndex(x, y, z);
+                grid.distances[i] = value[0];
+                grid.instances[i] = value[1] >= 0.0f ? uint32_t(value[1]) : kNoInstance;
+            }
+        }
     }
     return grid;
 }

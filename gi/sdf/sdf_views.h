@@ -48,8 +48,10 @@ private:
     rhi::BufferHandle pixels_;
 };
 
-// The global SDF texture read back (distance, nearest instance: kNoInstance where none).
-GlobalSdf readGlobalSdf(rhi::IDevice& device, const SceneSdf& sdfs);
+// One cascade of the global SDF read back in window order (distance, nearest instance:
+// kNoInstance where none), with its window's corner and voxel size; cascade 0 of a scene with
+// one cascade is the whole scene-fitted grid.
+GlobalSdf readGlobalSdf(rhi::IDevice& device, const SceneSdf& sdfs, uint32_t cascade = 0);
 
 // Slice z of a global SDF as a display image, +y up: magma over [-maxDistance, maxDistance]
 // (dark inside, bright far outside), white where |distance| is below half a voxel (the

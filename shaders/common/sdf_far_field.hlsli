@@ -4,6 +4,12 @@
 // +-maxDistance; nearest instance id as a float): sphere tracing, and cone tracing that also
 // estimates how much of the cone was blocked.
 //
+// Cascades (SdfGlobalCascade, gi/sdf/global_sdf_cascades.h): every sample reads the finest
+// cascade whose window holds it (sdfGlobalCascadeAt), and the tracers' thresholds and smallest
+// steps are in that cascade's voxels; a truncated distance is a safe step in any cascade, so a
+// ray walks from fine to coarse cascades without special cases. With one cascade all of this
+// is the single scene-fitted grid.
+//
 // Samples are trilinear from eight Loads, not the hardware filter: filtering 32-bit float
 // textures is an optional feature, the G channel (ids) must never be filtered, and exact
 // weights keep the GPU within rounding of the CPU reference (composeGlobalSdf).
@@ -24,28 +30,69 @@
 #error "define LUMINA_SDF_SCENE, LUMINA_SDF_INSTANCE and LUMINA_SDF_GLOBAL before including sdf_far_field.hlsli"
 #endif
 
-float sdfGlobalTexel(int3 voxel) {
-    return LUMINA_SDF_GLOBAL.Load(int4(voxel, 0)).x;
+float sdfGlobalTexel(uint3 texel) {
+    return LUMINA_SDF_GLOBAL.Load(int4(int3(texel), 0)).x;
 }
 
-// Signed distance in world units at a world point. Outside the grid: a lower bound,
-// sqrt(d^2 + s^2), d the distance to the grid box and s the sample at its nearest point.
-float sdfSampleGlobal(float3 p) {
-    float3 boxMin = LUMINA_SDF_SCENE.globalMinAndVoxelSize.xyz;
-    float3 boxMax = LUMINA_SDF_SCENE.globalMaxAndMaxDistance.xyz;
-    float invVoxel = 1.0f / LUMINA_SDF_SCENE.globalMinAndVoxelSize.w;
-    int3 last = int3(LUMINA_SDF_SCENE.globalDims.xyz) - 1;
+uint sdfGlobalCascadeCount() {
+    return LUMINA_SDF_SCENE.globalDims.w;
+}
+
+// The finest cascade whose window holds p at least a voxel from its faces (so that trilinear
+// samples and the normal's central differences stay inside it); the coarsest when none does.
+uint sdfGlobalCascadeAt(float3 p) {
+    uint count = sdfGlobalCascadeCount();
+    for (uint c = 0u; c + 1u < count; ++c) {
+        SdfGlobalCascade cascade = LUMINA_SDF_SCENE.cascades[c];
+        float margin = cascade.minAndVoxelSize.w;
+        if (all(p >= cascade.minAndVoxelSize.xyz + margin) && all(p <= cascade.maxAndMaxDistance.xyz - margin)) {
+            return c;
+        }
+    }
+    return count - 1u;
+}
+
+float sdfGlobalVoxelSize(uint cascade) {
+    return LUMINA_SDF_SCENE.cascades[cascade].minAndVoxelSize.w;
+}
+
+// Voxel size of the cascade that serves p: the scale of the global SDF's detail (and error) there.
+float sdfGlobalVoxelSizeAt(float3 p) {
+    return sdfGlobalVoxelSize(sdfGlobalCascadeAt(p));
+}
+
+// Voxels of the finest cascade in one voxel of the cascade that serves p (1, 2, 4, ...; exactly 1
+// with a single cascade): scales offsets chosen in finest voxels, such as a ray origin's lift.
+float sdfGlobalCascadeScaleAt(float3 p) {
+    return sdfGlobalVoxelSizeAt(p) / sdfGlobalVoxelSize(0u);
+}
+
+// Signed distance in world units at a world point, from one cascade. Outside its window: a
+// lower bound, sqrt(d^2 + s^2), d the distance to the window and s the sample at its nearest point.
+float sdfSampleCascade(uint c, float3 p) {
+    SdfGlobalCascade cascade = LUMINA_SDF_SCENE.cascades[c];
+    float3 boxMin = cascade.minAndVoxelSize.xyz;
+    float3 boxMax = cascade.maxAndMaxDistance.xyz;
+    float invVoxel = 1.0f / cascade.minAndVoxelSize.w;
+    int3 last = int3(cascade.dims.xyz) - 1;
     float3 inBox = clamp(p, boxMin, boxMax);
-    float3 local = clamp((inBox - boxMin) * invVoxel, float3(0.5f, 0.5f, 0.5f),
-                         float3(LUMINA_SDF_SCENE.globalDims.xyz) - 0.5f) -
-                   0.5f;
+    float3 local = clamp((inBox - boxMin) * invVoxel, float3(0.5f, 0.5f, 0.5f), float3(cascade.dims.xyz) - 0.5f) - 0.5f;
     int3 base = min(int3(local), last);
     int3 next = min(base + 1, last);
     float3 f = local - float3(base);
-    float c00 = lerp(sdfGlobalTexel(int3(base.x, base.y, base.z)), sdfGlobalTexel(int3(next.x, base.y, base.z)), f.x);
-    float c10 = lerp(sdfGlobalTexel(int3(base.x, next.y, base.z)), sdfGlobalTexel(int3(next.x, next.y, base.z)), f.x);
-    float c01 = lerp(sdfGlobalTexel(int3(base.x, base.y, next.z)), sdfGlobalTexel(int3(next.x, base.y, next.z)), f.x);
-    float c11 = lerp(sdfGlobalTexel(int3(base.x, next.y, next.z)), sdfGlobalTexel(int3(next.x, next.y, next.z)), f.x);
+    // Toroidal texels of base and next, (voxel + wrap) mod dims: both terms lie in [0, dims), so
+    // one conditional subtraction does it, without an integer division per sample. With a single
+    // cascade the wrap is 0: the texels are base and next themselves.
+    uint3 b = uint3(base) + cascade.wrapAndSlab.xyz;
+    b -= cascade.dims.xyz * uint3(b >= cascade.dims.xyz);
+    uint3 n = uint3(next) + cascade.wrapAndSlab.xyz;
+    n -= cascade.dims.xyz * uint3(n >= cascade.dims.xyz);
+    b.z += cascade.wrapAndSlab.w;
+    n.z += cascade.wrapAndSlab.w;
+    float c00 = lerp(sdfGlobalTexel(uint3(b.x, b.y, b.z)), sdfGlobalTexel(uint3(n.x, b.y, b.z)), f.x);
+    float c10 = lerp(sdfGlobalTexel(uint3(b.x, n.y, b.z)), sdfGlobalTexel(uint3(n.x, n.y, b.z)), f.x);
+    float c01 = lerp(sdfGlobalTexel(uint3(b.x, b.y, n.z)), sdfGlobalTexel(uint3(n.x, b.y, n.z)), f.x);
+    float c11 = lerp(sdfGlobalTexel(uint3(b.x, n.y, n.z)), sdfGlobalTexel(uint3(n.x, n.y, n.z)), f.x);
     float sample = lerp(lerp(c00, c10, f.y), lerp(c01, c11, f.y), f.z);
     float3 outside = p - inBox;
     float outsideSquared = dot(outside, outside);
@@ -56,22 +103,33 @@ float sdfSampleGlobal(float3 p) {
     return sample;
 }
 
-// The instance the global SDF names at the voxel holding p: LUMINA_SDF_NO_HIT where nothing
-// lies within the truncation distance.
+// Signed distance in world units at a world point, from the finest cascade that holds it
+// (sdfGlobalCascadeAt); beyond every cascade, the coarsest's lower bound.
+float sdfSampleGlobal(float3 p) {
+    return sdfSampleCascade(sdfGlobalCascadeAt(p), p);
+}
+
+// The instance the global SDF names at the voxel holding p (in the cascade that serves p):
+// LUMINA_SDF_NO_HIT where nothing lies within the truncation distance.
 uint sdfGlobalInstanceAt(float3 p) {
-    float invVoxel = 1.0f / LUMINA_SDF_SCENE.globalMinAndVoxelSize.w;
-    int3 last = int3(LUMINA_SDF_SCENE.globalDims.xyz) - 1;
-    int3 voxel = clamp(int3(floor((p - LUMINA_SDF_SCENE.globalMinAndVoxelSize.xyz) * invVoxel)), int3(0, 0, 0), last);
-    float id = LUMINA_SDF_GLOBAL.Load(int4(voxel, 0)).y;
+    SdfGlobalCascade cascade = LUMINA_SDF_SCENE.cascades[sdfGlobalCascadeAt(p)];
+    float invVoxel = 1.0f / cascade.minAndVoxelSize.w;
+    int3 last = int3(cascade.dims.xyz) - 1;
+    int3 voxel = clamp(int3(floor((p - cascade.minAndVoxelSize.xyz) * invVoxel)), int3(0, 0, 0), last);
+    uint3 texel = (uint3(voxel) + cascade.wrapAndSlab.xyz) % cascade.dims.xyz;
+    texel.z += cascade.wrapAndSlab.w;
+    float id = LUMINA_SDF_GLOBAL.Load(int4(int3(texel), 0)).y;
     return id >= 0.0f ? uint(id) : LUMINA_SDF_NO_HIT;
 }
 
+// Unit normal from the gradient of the cascade that serves p, half a voxel of it either side.
 float3 sdfGlobalNormal(float3 p) {
-    float h = LUMINA_SDF_GRADIENT_STEP_VOXELS * LUMINA_SDF_SCENE.globalMinAndVoxelSize.w;
+    uint c = sdfGlobalCascadeAt(p);
+    float h = LUMINA_SDF_GRADIENT_STEP_VOXELS * sdfGlobalVoxelSize(c);
     float3 g;
-    g.x = sdfSampleGlobal(p + float3(h, 0.0f, 0.0f)) - sdfSampleGlobal(p - float3(h, 0.0f, 0.0f));
-    g.y = sdfSampleGlobal(p + float3(0.0f, h, 0.0f)) - sdfSampleGlobal(p - float3(0.0f, h, 0.0f));
-    g.z = sdfSampleGlobal(p + float3(0.0f, 0.0f, h)) - sdfSampleGlobal(p - float3(0.0f, 0.0f, h));
+    g.x = sdfSampleCascade(c, p + float3(h, 0.0f, 0.0f)) - sdfSampleCascade(c, p - float3(h, 0.0f, 0.0f));
+    g.y = sdfSampleCascade(c, p + float3(0.0f, h, 0.0f)) - sdfSampleCascade(c, p - float3(0.0f, h, 0.0f));
+    g.z = sdfSampleCascade(c, p + float3(0.0f, 0.0f, h)) - sdfSampleCascade(c, p - float3(0.0f, 0.0f, h));
     float len = length(g);
     return len > 0.0f ? g / len : float3(0.0f, 0.0f, 0.0f);
 }
@@ -107,13 +165,16 @@ SdfHit sdfTraceGlobal(float3 origin, float3 direction, float tMin, SdfTraceParam
     if (!(t <= segment.y)) {
         return sdfMiss(origin, direction, params.maxDistance, 0u);
     }
-    float voxel = LUMINA_SDF_SCENE.globalMinAndVoxelSize.w;
-    float threshold = params.hitThresholdVoxels * voxel;
-    float minStep = params.minStepVoxels * voxel;
     float previousT = -1.0f;
     float previousDistance = 0.0f;
     for (uint step = 0u; step < params.maxSteps; ++step) {
-        float distance = sdfSampleGlobal(origin + t * direction);
+        // Threshold and step in voxels of the cascade that serves this sample.
+        float3 p = origin + t * direction;
+        uint cascade = sdfGlobalCascadeAt(p);
+        float voxel = sdfGlobalVoxelSize(cascade);
+        float threshold = params.hitThresholdVoxels * voxel;
+        float minStep = params.minStepVoxels * voxel;
+        float distance = sdfSampleCascade(cascade, p);
         if (distance < threshold) {
             // Every surface of the global SDF has a zero crossing (open ones their shell).
             if (previousT >= 0.0f) {
@@ -146,12 +207,14 @@ SdfHit sdfConeTraceGlobal(float3 origin, float3 direction, float tMin, float tan
     if (!(t <= segment.y)) {
         return sdfMiss(origin, direction, params.maxDistance, 0u);
     }
-    float voxel = LUMINA_SDF_SCENE.globalMinAndVoxelSize.w;
-    float threshold = params.hitThresholdVoxels * voxel;
-    float minStep = params.minStepVoxels * voxel;
     float visibility = 1.0f;
     for (uint step = 0u; step < params.maxSteps; ++step) {
-        float distance = sdfSampleGlobal(origin + t * direction);
+        float3 p = origin + t * direction;
+        uint cascade = sdfGlobalCascadeAt(p);
+        float voxel = sdfGlobalVoxelSize(cascade);
+        float threshold = params.hitThresholdVoxels * voxel;
+        float minStep = params.minStepVoxels * voxel;
+        float distance = sdfSampleCascade(cascade, p);
         float radius = t * tanHalfAngle;
         if (radius > 0.0f) {
             visibility = min(visibility, saturate(distance / radius));

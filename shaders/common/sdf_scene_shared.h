@@ -7,7 +7,8 @@
 // - one SdfInstanceDesc per placed mesh, with both transforms and its world box;
 // - an instance BVH over those world boxes: BvhNode (bvh_shared.h) laid out depth-first as
 //   the triangle BVH is, whose leaves name a range of a uint list of instance indices;
-// - the global SDF: an RG32F 3D texture over the scene bounds, R the signed distance in
+// - the global SDF: an RG32F 3D texture over the scene bounds (or clipmap cascades around the
+//   camera, one slab each, SdfGlobalCascade), R the signed distance in
 //   world units (truncated to +-maxDistance), G the index of the nearest instance as a float
 //   (exact below 2^24), LUMINA_SDF_GLOBAL_NO_INSTANCE where nothing lies within maxDistance.
 //   Ids are stored as float values, not as float bits: small integers as bits are
@@ -32,13 +33,32 @@ struct SdfInstanceDesc {
     uint4 ids;               // x: SDF volume; y: scene mesh; z: scene instance; w: 0
 };
 
-// Facts every kernel that traces the scene's SDFs needs, in one constant buffer.
+// Most clipmap cascades of the global SDF (gi/sdf/global_sdf_cascades.h).
+#define LUMINA_SDF_MAX_CASCADES 6u
+
+// One cascade of the global SDF: a window of dims voxels on a lattice of voxelSize, stored
+// toroidally in its slab of the global SDF texture (slab c: z texels [c * dims.z, (c + 1) * dims.z)).
+// A scene with one cascade has the scene-fitted grid: lattice origin = window corner, window 0.
+struct SdfGlobalCascade {
+    float4 minAndVoxelSize;       // xyz: world corner of the window (its voxel (0,0,0)); w: voxel size
+    float4 maxAndMaxDistance;     // xyz: far corner of the window; w: truncation distance
+    float4 latticeOriginAndShell; // xyz: world corner of lattice voxel (0,0,0); w: what open instances'
+                                  // shells (SdfInstanceDesc::worldMax.w, sized for cascade 0) grow by here
+    uint4 window;                 // xyz: lattice voxel at the window's corner, int bits (asint); w: 0
+    uint4 wrapAndSlab; // xyz: texel of window voxel (0,0,0), window mod dims; w: first z texel of the slab
+    uint4 dims;        // xyz: voxels per axis; w: 0
+};
+
+// Facts every kernel that traces the scene's SDFs needs, in one constant buffer. The global*
+// fields describe the cascades together: the box is their union, the voxel size and
+// truncation the finest cascade's (for a single cascade: the grid's own).
 struct SdfSceneInfo {
     float4 invAtlasDims;            // xyz: 1 / atlas texels per axis; w: 0
-    float4 globalMinAndVoxelSize;   // xyz: world corner of global voxel (0,0,0); w: voxel size
-    float4 globalMaxAndMaxDistance; // xyz: far corner of the grid; w: truncation distance
-    uint4 globalDims;               // xyz: voxels per axis; w: 0
+    float4 globalMinAndVoxelSize;   // xyz: world corner of the cascades' union; w: finest voxel size
+    float4 globalMaxAndMaxDistance; // xyz: far corner of the union; w: finest truncation distance
+    uint4 globalDims;               // xyz: voxels per axis of every cascade; w: cascade count
     uint4 counts;                   // x: instances; y: instance BVH nodes; z: volumes; w: 0
+    SdfGlobalCascade cascades[LUMINA_SDF_MAX_CASCADES]; // finest first; globalDims.w of them are used
 };
 
 // Defaults of SdfTraceParams, after the thesis (at most 64 steps) and the CPU reference
@@ -68,8 +88,9 @@ struct SdfHit {
 // One brick of a compose dispatch and the instances that may reach it: those whose world box
 // lies within maxDistance of the brick's box, ascending (the order of the CPU reference).
 struct GlobalSdfBrick {
-    uint4 coordAndInstances; // x: brick coordinate, 10 bits per axis (x | y << 10 | z << 20);
-                             // y: first entry in the brick instance list; z: entry count; w: 0
+    uint4 coordAndInstances; // x: brick coordinate in its cascade's window, 10 bits per axis
+                             // (x | y << 10 | z << 20); y: first entry in the brick instance list;
+                             // z: entry count; w: cascade
 };
 
 // Push constants of global_sdf_compose.hlsl.
@@ -81,7 +102,8 @@ struct GlobalSdfComposeConstants {
 };
 
 LUMINA_STATIC_ASSERT_SIZE(SdfInstanceDesc, 144);
-LUMINA_STATIC_ASSERT_SIZE(SdfSceneInfo, 80);
+LUMINA_STATIC_ASSERT_SIZE(SdfGlobalCascade, 96);
+LUMINA_STATIC_ASSERT_SIZE(SdfSceneInfo, 80 + 96 * LUMINA_SDF_MAX_CASCADES);
 LUMINA_STATIC_ASSERT_SIZE(SdfTraceParams, 16);
 LUMINA_STATIC_ASSERT_SIZE(SdfHit, 48);
 LUMINA_STATIC_ASSERT_SIZE(GlobalSdfBrick, 16);

@@ -3,7 +3,8 @@
 // GPU twin of composeGlobalSdf (gi/sdf/global_sdf.cpp), same culling, same order, same
 // clamps, same shells around open volumes (SdfInstanceDesc::worldMax.w). One 4x4x4 group per brick of the list; each brick carries the instances that can
 // reach it (gi/sdf/global_sdf_bricks.h), ascending, so the result never depends on which
-// bricks a dispatch holds.
+// bricks a dispatch holds. Bricks of every cascade share one dispatch (GlobalSdfBrick names its
+// cascade).
 #include "common/bindings.hlsli"
 #include "common/sdf_scene_shared.h"
 #include "common/sdf_shared.h"
@@ -33,22 +34,29 @@ static const uint kBrickCoordMask = (1u << kBrickCoordBits) - 1u;
         return;
     }
     uint4 brick = gBricks[brickIndex].coordAndInstances;
+    SdfGlobalCascade cascade = gSdfScene.cascades[brick.w];
     uint3 brickCoord = uint3(brick.x & kBrickCoordMask, (brick.x >> kBrickCoordBits) & kBrickCoordMask,
                              brick.x >> (2u * kBrickCoordBits));
     uint3 voxel = brickCoord * LUMINA_SDF_BRICK_SIZE + threadId;
-    if (any(voxel >= gSdfScene.globalDims.xyz)) {
+    if (any(voxel >= cascade.dims.xyz)) {
         return;
     }
-    float voxelSize = gSdfScene.globalMinAndVoxelSize.w;
-    float maxDistance = gSdfScene.globalMaxAndMaxDistance.w;
-    float3 p = gSdfScene.globalMinAndVoxelSize.xyz + (float3(voxel) + 0.5f) * voxelSize;
+    float voxelSize = cascade.minAndVoxelSize.w;
+    float maxDistance = cascade.maxAndMaxDistance.w;
+    // The centre from the lattice index, not from the window, so that a voxel recomposed after
+    // the window moved equals a fresh compose (for a single cascade: the grid's corner + voxel).
+    float3 p = cascade.latticeOriginAndShell.xyz + (float3(int3(voxel) + asint(cascade.window.xyz)) + 0.5f) * voxelSize;
     float best = maxDistance;
     float bestInstance = LUMINA_SDF_GLOBAL_NO_INSTANCE;
     for (uint i = brick.y; i < brick.y + brick.z; ++i) {
         uint index = gBrickInstances[i];
         SdfInstanceDesc instance = gSdfInstances[index];
         SdfVolumeDesc volume = gSdfVolumes[instance.ids.x];
+        // The table's shell is sized for the finest cascade; coarser ones grow it.
         float shell = instance.worldMax.w;
+        if (shell > 0.0f) {
+            shell += cascade.latticeOriginAndShell.w;
+        }
         // Everything of the instance lies in its world box: it cannot be nearer.
         if (sdfBoxDistance(p, instance.worldMinAndScale.xyz, instance.worldMax.xyz) - shell >= best) {
             continue;
@@ -61,5 +69,8 @@ static const uint kBrickCoordMask = (1u << kBrickCoordBits) - 1u;
             bestInstance = float(index);
         }
     }
-    gGlobalSdf[voxel] = float2(max(best, -maxDistance), bestInstance);
+    // Toroidal storage: lattice voxel i at texel i mod dims of the cascade's slab.
+    uint3 texel = (voxel + cascade.wrapAndSlab.xyz) % cascade.dims.xyz;
+    texel.z += cascade.wrapAndSlab.w;
+    gGlobalSdf[texel] = float2(max(best, -maxDistance), bestInstance);
 }

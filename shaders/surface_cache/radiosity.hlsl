@@ -123,7 +123,8 @@ float3 finiteOrZero(float3 v) {
         gProbesOut[probeIndex(probe)] = emptyProbe(); // its texels get no indirect light
         return;
     }
-    float3 origin = world + gConstants.trace.x * n;
+    // The offset is in finest global SDF voxels; where a coarser cascade serves the texel, its own.
+    float3 origin = world + gConstants.trace.x * sdfGlobalCascadeScaleAt(world) * n;
     // An orthonormal frame around n (Duff et al. 2017, branchless).
     float s = n.z >= 0.0f ? 1.0f : -1.0f;
     float a = -1.0f / (s + n.z);

@@ -170,6 +170,36 @@ TEST(MeshSdf, ThreadCountDoesNotChangeTheResult) {
     EXPECT_EQ(0, std::memcmp(a.distances.data(), b.distances.data(), a.distances.size() * sizeof(float)));
 }
 
+TEST(MeshSdf, ABatchBuildsWhatEachMeshBuildsAlone) {
+    // Closed, open and lid-less meshes of different sizes, so that slices of several meshes
+    // interleave on the threads.
+    const lumina::test::Mesh sphere = lumina::test::makeIcosphere({0, 0, 0}, 1.0f, 2);
+    const lumina::test::Mesh openBox =
+        lumina::test::makeBox({-0.8f, -0.8f, -0.8f}, {0.8f, 0.8f, 0.8f}, 2, {3});
+    const lumina::test::Mesh slab = lumina::test::makeBox({-4.0f, -0.3f, -3.5f}, {4.0f, 0.3f, 3.5f}, 4);
+    const std::vector<MeshSdfInput> inputs = {{sphere.positions, sphere.indices},
+                                              {openBox.positions, openBox.indices},
+                                              {slab.positions, slab.indices}};
+    SdfSettings alone = small(24), batch = small(24);
+    alone.threads = 1;
+    batch.threads = 3;
+    const std::vector<MeshSdf> built = buildMeshSdfs(inputs, batch);
+    ASSERT_EQ(built.size(), inputs.size());
+    for (size_t m = 0; m < inputs.size(); ++m) {
+        const MeshSdf single = buildMeshSdf(inputs[m].positions, inputs[m].indices, alone);
+        EXPECT_EQ(built[m].dims, single.dims);
+        EXPECT_EQ(built[m].volumeMin, single.volumeMin);
+        ASSERT_EQ(built[m].distances.size(), single.distances.size());
+        EXPECT_EQ(0, std::memcmp(built[m].distances.data(), single.distances.data(),
+                                 single.distances.size() * sizeof(float)))
+            << "mesh " << m;
+        EXPECT_GT(built[m].stats.signRays, 0u);
+    }
+    const std::vector<MeshSdfInput> withEmpty = {inputs[0], {sphere.positions, {}}};
+    EXPECT_THROW(buildMeshSdfs(withEmpty, batch), std::invalid_argument);
+    EXPECT_TRUE(buildMeshSdfs({}, batch).empty());
+}
+
 TEST(MeshSdf, RejectsBadInput) {
     const lumina::test::Mesh box = lumina::test::makeBox({0, 0, 0}, {1, 1, 1});
     SdfSettings settings;

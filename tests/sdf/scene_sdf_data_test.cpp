@@ -94,6 +94,35 @@ TEST_F(SceneSdfDataTest, InstanceTableAndGridCoverTheScene) {
     EXPECT_NEAR(data.instances[3].worldMinAndScale.w, 0.6f, 1e-5f); // smallest of 1.5, 0.6, 1
 }
 
+TEST_F(SceneSdfDataTest, ScenesOfFewVoxelsPerInstanceGetCascades) {
+    // The test scene as it is: its median instance spans many voxels of the fitted grid.
+    scene::Scene scene = test::makeTestScene();
+    const SceneSdfData compact = buildSceneSdfData(scene, settings());
+    EXPECT_EQ(compact.cascades.count, 1u);
+    EXPECT_GT(compact.medianInstanceSize, 0.0f);
+    // Its instances spread 300 units apart along x: now the fitted grid is far too coarse for
+    // them, and the scene gets cascades halving the voxel size, the finest around the camera.
+    for (uint32_t i = 0; i < scene.instances.size(); ++i) {
+        scene.instances[i].transform[3].x += 300.0f * float(i);
+    }
+    scene.camera.position = glm::vec3(900.0f, 0.0f, 0.0f);
+    const SceneSdfData spread = buildSceneSdfData(scene, settings());
+    EXPECT_NEAR(spread.medianInstanceSize, compact.medianInstanceSize, 1e-3f);
+    ASSERT_EQ(spread.cascades.count, 4u);
+    EXPECT_EQ(spread.cascades.dims, glm::uvec3(32));
+    EXPECT_EQ(spread.global.voxelSize, spread.cascades.finestVoxelSize);
+    const bvh::Aabb finest{spread.global.boundsMin,
+                           spread.global.boundsMin + glm::vec3(spread.global.dims) * spread.global.voxelSize};
+    EXPECT_TRUE(finest.contains({scene.camera.position, scene.camera.position}));
+    // A finest voxel size asked for directly decides alone.
+    SceneSdfSettings fine = settings();
+    fine.globalFinestVoxelSize = 0.05f;
+    fine.globalCascades = 2;
+    EXPECT_EQ(buildSceneSdfData(test::makeTestScene(), fine).cascades.count, 2u);
+    fine.globalFinestVoxelsPerInstance = 0.0f;
+    EXPECT_THROW(buildSceneSdfData(test::makeTestScene(), fine), std::invalid_argument);
+}
+
 TEST_F(SceneSdfDataTest, IdenticalMeshesShareOneVolume) {
     scene::Scene scene = test::makeTestScene();
     scene::Mesh copy = scene.meshes[0];

@@ -84,36 +84,52 @@ protected:
     uint64_t frameIndex_ = 0;
 };
 
-TEST_P(SceneSdfGpuTest, GlobalSdfMatchesTheCpuReference) {
-    const scene::Scene scene = sdf::test::makeTestScene();
-    sdf::SceneSdfData data = sdf::buildSceneSdfData(scene, settings());
-    const sdf::GlobalSdf cpu = sdf::composeGlobalSdf(data.atlas, data.composeInstances(), data.global);
-    // Hardware trilinear weights have 8 fractional bits: a few thousandths of a mesh voxel,
-    // times the instance's scale.
+// A GPU-composed grid against the CPU reference, voxel by voxel.
+struct GridAgreement {
+    size_t voxels = 0;
+    uint32_t close = 0, sameInstance = 0, surfaceVoxels = 0;
+    float worst = 0.0f;
+};
+
+GridAgreement compareGrids(const sdf::GlobalSdf& cpu, const sdf::GlobalSdf& gpu, float tolerance) {
+    GridAgreement a;
+    a.voxels = cpu.distances.size();
+    for (size_t i = 0; i < cpu.distances.size(); ++i) {
+        const float error = std::abs(gpu.distances[i] - cpu.distances[i]);
+        a.worst = std::max(a.worst, error);
+        a.close += error <= tolerance;
+        a.sameInstance += gpu.instances[i] == cpu.instances[i];
+        a.surfaceVoxels += std::abs(cpu.distances[i]) < cpu.voxelSize;
+    }
+    return a;
+}
+
+// Hardware trilinear weights have 8 fractional bits: a few thousandths of a mesh voxel, times
+// the instance's scale.
+float composeTolerance(const sdf::SceneSdfData& data) {
     float tolerance = 0.0f;
     for (const gpu::SdfInstanceDesc& instance : data.instances) {
         const float voxel = data.atlas.volumes[instance.ids.x].volumeMinAndVoxelSize.w;
         tolerance = std::max(tolerance, 0.02f * voxel * instance.worldMinAndScale.w);
     }
+    return tolerance;
+}
+
+TEST_P(SceneSdfGpuTest, GlobalSdfMatchesTheCpuReference) {
+    const scene::Scene scene = sdf::test::makeTestScene();
+    sdf::SceneSdfData data = sdf::buildSceneSdfData(scene, settings());
+    const sdf::GlobalSdf cpu = sdf::composeGlobalSdf(data.atlas, data.composeInstances(), data.global);
+    const float tolerance = composeTolerance(data);
     sdf::SceneSdf sdfs(device(), std::move(data));
     runFrame([&](gi::FrameContext& frame) { sdfs.record(frame); });
     EXPECT_TRUE(sdfs.lastCompose().full);
     const sdf::GlobalSdf gpu = sdf::readGlobalSdf(device(), sdfs);
     ASSERT_EQ(gpu.distances.size(), cpu.distances.size());
-    uint32_t close = 0, sameInstance = 0, surfaceVoxels = 0;
-    float worst = 0.0f;
-    for (size_t i = 0; i < cpu.distances.size(); ++i) {
-        const float error = std::abs(gpu.distances[i] - cpu.distances[i]);
-        worst = std::max(worst, error);
-        close += error <= tolerance;
-        sameInstance += gpu.instances[i] == cpu.instances[i];
-        surfaceVoxels += std::abs(cpu.distances[i]) < cpu.voxelSize;
-    }
-    const size_t n = cpu.distances.size();
-    EXPECT_EQ(close, n) << "worst " << worst << ", tolerance " << tolerance;
+    const GridAgreement a = compareGrids(cpu, gpu, tolerance);
+    EXPECT_EQ(a.close, a.voxels) << "worst " << a.worst << ", tolerance " << tolerance;
     // Ids differ only where two instances are within rounding of each other.
-    EXPECT_GE(double(sameInstance), 0.999 * double(n)) << sameInstance << " of " << n;
-    EXPECT_GT(surfaceVoxels, n / 100);
+    EXPECT_GE(double(a.sameInstance), 0.999 * double(a.voxels)) << a.sameInstance << " of " << a.voxels;
+    EXPECT_GT(a.surfaceVoxels, a.voxels / 100);
 }
 
 TEST_P(SceneSdfGpuTest, MovingOneInstanceRecomposesOnlyItsRegionAndMatchesAFullCompose) {
@@ -177,7 +193,7 @@ struct Agreement {
 
 Agreement compare(const scene::Scene& scene, const bvh::Bvh& bvh, const std::vector<sdf::test::TestRay>& rays,
                   const std::vector<gpu::SdfHit>& hits,
-                  const std::function<float(uint32_t instance)>& tolerance) {
+                  const std::function<float(uint32_t instance, size_t ray)>& tolerance) {
     Agreement a;
     for (size_t i = 0; i < rays.size(); ++i) {
         bvh::Ray ray;
@@ -201,7 +217,7 @@ Agreement compare(const scene::Scene& scene, const bvh::Bvh& bvh, const std::vec
             continue;
         }
         ++a.bothHit;
-        const float error = std::abs(hit.positionAndT.w - exact.t) / tolerance(exact.primId);
+        const float error = std::abs(hit.positionAndT.w - exact.t) / tolerance(exact.primId, i);
         a.worst = std::max(a.worst, error);
         a.withinTolerance += error <= 1.0f;
         if (error > 1.0f && std::getenv("LUMINA_SDF_TEST_VERBOSE") != nullptr) {
@@ -232,7 +248,7 @@ TEST_P(SceneSdfGpuTest, NearFieldAgreesWithBvhRayCasts) {
         trace(sdfs, rays, sdf::SdfField::Near, sdf::defaultTraceParams(sdf::SdfField::Near, 1e30f));
     // One voxel of the hit instance's SDF, in world units (its largest scale).
     const sdf::SceneSdfData& data = sdfs.data();
-    const Agreement a = compare(scene, bvh, rays, hits, [&](uint32_t instance) {
+    const Agreement a = compare(scene, bvh, rays, hits, [&](uint32_t instance, size_t) {
         const gpu::SdfInstanceDesc& desc = data.instances[instance];
         const glm::mat4 m = sdf::objectToWorld(desc);
         const float scale = std::max(
@@ -258,7 +274,7 @@ TEST_P(SceneSdfGpuTest, FarFieldAndConeTracesAgreeWithBvhRayCasts) {
     const gpu::SdfTraceParams params = sdf::defaultTraceParams(sdf::SdfField::Far, 1e30f);
     const std::vector<gpu::SdfHit> far = trace(sdfs, rays, sdf::SdfField::Far, params);
     const float globalVoxel = sdfs.data().global.voxelSize;
-    const Agreement a = compare(scene, bvh, rays, far, [&](uint32_t) { return 2.0f * globalVoxel; });
+    const Agreement a = compare(scene, bvh, rays, far, [&](uint32_t, size_t) { return 2.0f * globalVoxel; });
     std::printf("far field: %u of %u rays agree, %u hit both, %u within two global voxels (worst %.2f), "
                 "%u same instance, %u normals aligned\n",
                 a.agree, a.rays, a.bothHit, a.withinTolerance, a.worst, a.sameInstance, a.normalsAligned);
@@ -292,6 +308,151 @@ TEST_P(SceneSdfGpuTest, FarFieldAndConeTracesAgreeWithBvhRayCasts) {
     EXPECT_GT(wideHits, farHits);
     EXPECT_EQ(occlusionInRange, a.rays);
     EXPECT_GT(partial, a.rays / 20);
+}
+
+// Cascades on the test scene: 32^3 voxels each, the finest 0.076 (the fitted grid's 0.3
+// halved twice), so the finest window (2.4 across) holds the sphere at the origin and the
+// coarsest all of the scene.
+sdf::SceneSdfSettings cascadedSettings() {
+    sdf::SceneSdfSettings s;
+    s.mesh.resolution = 32;
+    s.globalResolution = 32;
+    s.globalCascades = 3;
+    s.globalFinestVoxelSize = 0.05f;
+    s.useCache = false;
+    return s;
+}
+
+TEST_P(SceneSdfGpuTest, CascadedGlobalSdfMatchesTheCpuReferencePerCascade) {
+    const scene::Scene scene = sdf::test::makeTestScene();
+    sdf::SceneSdfData data = sdf::buildSceneSdfData(scene, cascadedSettings());
+    ASSERT_EQ(data.cascades.count, 3u);
+    const float tolerance = composeTolerance(data);
+    const sdf::SdfAtlas atlas = data.atlas;
+    const std::vector<sdf::SdfInstance> instances = data.composeInstances();
+    sdf::SceneSdf sdfs(device(), std::move(data));
+    const glm::vec3 camera(0.3f, 0.2f, -0.4f);
+    runFrame([&](gi::FrameContext& frame) { sdfs.record(frame, camera); });
+    for (uint32_t c = 0; c < 3; ++c) {
+        const sdf::GlobalSdfSettings grid = sdfs.cascadeGrid(c);
+        const sdf::GlobalSdf cpu = sdf::composeGlobalSdf(atlas, instances, grid);
+        const sdf::GlobalSdf gpu = sdf::readGlobalSdf(device(), sdfs, c);
+        ASSERT_EQ(gpu.distances.size(), cpu.distances.size());
+        EXPECT_EQ(gpu.boundsMin, cpu.boundsMin);
+        const GridAgreement a = compareGrids(cpu, gpu, tolerance);
+        std::printf("cascade %u: voxel %.4f, worst error %.5f (tolerance %.5f), %u of %zu same instance\n", c,
+                    grid.voxelSize, a.worst, tolerance, a.sameInstance, a.voxels);
+        EXPECT_EQ(a.close, a.voxels) << "cascade " << c << ": worst " << a.worst << ", tolerance "
+                                     << tolerance;
+        EXPECT_GE(double(a.sameInstance), 0.999 * double(a.voxels)) << "cascade " << c;
+        EXPECT_GT(a.surfaceVoxels, a.voxels / 100) << "cascade " << c;
+        // The camera lies inside every window.
+        EXPECT_TRUE(bvh::Aabb({grid.boundsMin, grid.boundsMin + glm::vec3(grid.dims) * grid.voxelSize})
+                        .contains({camera, camera}));
+    }
+}
+
+TEST_P(SceneSdfGpuTest, ScrollingRecomposesOnlyExposedBricksAndMatchesAFreshCompose) {
+    const scene::Scene scene = sdf::test::makeTestScene();
+    sdf::SceneSdf sdfs(device(), sdf::buildSceneSdfData(scene, cascadedSettings()));
+    const glm::vec3 start(0.3f, 0.2f, -0.4f);
+    runFrame([&](gi::FrameContext& frame) { sdfs.record(frame, start); });
+    EXPECT_TRUE(sdfs.lastCompose().full);
+    const uint32_t allBricks = sdfs.lastCompose().bricks;
+    EXPECT_EQ(allBricks, 3u * 8u * 8u * 8u);
+
+    // The camera stands still: skipped, with both reasons.
+    std::vector<gi::SkippedPass> skipped =
+        runFrame([&](gi::FrameContext& frame) { sdfs.record(frame, start); });
+    ASSERT_EQ(skipped.size(), 1u);
+    EXPECT_EQ(skipped[0].reason, "no instance moved, no cascade scrolled");
+
+    // Eight finest voxels along +x: the finest window moves two bricks; the coarsest, which
+    // holds the whole scene, stays.
+    const float finest = sdfs.data().cascades.finestVoxelSize;
+    const glm::vec3 moved = start + glm::vec3(8.0f * finest, 0.0f, 0.0f);
+    runFrame([&](gi::FrameContext& frame) { sdfs.record(frame, moved); });
+    const sdf::GlobalComposeStats scroll = sdfs.lastCompose();
+    std::printf("camera moved %.3f: %s; recomposed %u of %u bricks\n", 8.0f * finest, scroll.reason.c_str(),
+                scroll.bricks, allBricks);
+    EXPECT_FALSE(scroll.full);
+    ASSERT_FALSE(scroll.scrolledCascades.empty());
+    EXPECT_EQ(scroll.scrolledCascades.front(), 0u);
+    EXPECT_EQ(std::count(scroll.scrolledCascades.begin(), scroll.scrolledCascades.end(), 2u), 0);
+    EXPECT_EQ(scroll.bricks, scroll.exposedBricks);
+    EXPECT_GE(scroll.bricks, 2u * 8u * 8u);
+    EXPECT_LT(scroll.bricks, allBricks / 4);
+    EXPECT_NE(scroll.reason.find("cascade(s) scrolled: 0 (128 bricks exposed)"), std::string::npos)
+        << scroll.reason;
+
+    // A fresh SceneSdf composed in full at the new camera is identical bit for bit, per cascade.
+    sdf::SceneSdf fresh(device(), sdf::buildSceneSdfData(scene, cascadedSettings()));
+    runFrame([&](gi::FrameContext& frame) { fresh.record(frame, moved); });
+    for (uint32_t c = 0; c < 3; ++c) {
+        ASSERT_EQ(fresh.cascadeWindows()[c], sdfs.cascadeWindows()[c]);
+        const sdf::GlobalSdf scrolled = sdf::readGlobalSdf(device(), sdfs, c);
+        const sdf::GlobalSdf full = sdf::readGlobalSdf(device(), fresh, c);
+        ASSERT_EQ(full.distances.size(), scrolled.distances.size());
+        EXPECT_EQ(std::memcmp(full.distances.data(), scrolled.distances.data(),
+                              full.distances.size() * sizeof(float)),
+                  0)
+            << "cascade " << c;
+        EXPECT_EQ(full.instances, scrolled.instances) << "cascade " << c;
+    }
+}
+
+TEST_P(SceneSdfGpuTest, FarFieldAcrossCascadeBoundariesAgreesWithBvhRayCasts) {
+    const scene::Scene scene = sdf::test::makeTestScene(false);
+    sdf::SceneSdf sdfs(device(), sdf::buildSceneSdfData(scene, cascadedSettings()));
+    const glm::vec3 camera(0.3f, 0.2f, -0.4f);
+    runFrame([&](gi::FrameContext& frame) { sdfs.record(frame, camera); });
+    const bvh::Bvh bvh = sdf::test::worldBvh(scene);
+    const std::vector<sdf::test::TestRay> rays = sdf::test::randomRays(bvh.bounds, 4096, 29);
+    const gpu::SdfTraceParams params = sdf::defaultTraceParams(sdf::SdfField::Far, 1e30f);
+    const std::vector<gpu::SdfHit> far = trace(sdfs, rays, sdf::SdfField::Far, params);
+    // Which cascade serves a point: the finest whose window holds it a voxel from its faces
+    // (sdfGlobalCascadeAt).
+    std::vector<bvh::Aabb> inner;
+    for (uint32_t c = 0; c < 3; ++c) {
+        const sdf::GlobalSdfSettings grid = sdfs.cascadeGrid(c);
+        inner.push_back({grid.boundsMin + grid.voxelSize,
+                         grid.boundsMin + (glm::vec3(grid.dims) - 1.0f) * grid.voxelSize});
+    }
+    auto voxelAt = [&](const glm::vec3& p) {
+        for (uint32_t c = 0; c + 1 < 3; ++c) {
+            if (inner[c].contains({p, p})) {
+                return sdfs.cascadeGrid(c).voxelSize;
+            }
+        }
+        return sdfs.cascadeGrid(2).voxelSize;
+    };
+    // Hits within two voxels of the cascade that serves the exact hit point.
+    std::vector<float> tolerances(rays.size());
+    uint32_t finestHits = 0, coarserHits = 0;
+    for (size_t i = 0; i < rays.size(); ++i) {
+        bvh::Ray ray;
+        ray.origin = rays[i].origin;
+        ray.direction = rays[i].direction;
+        const bvh::RayHit exact = bvh::intersectClosest(bvh, ray);
+        const float voxel = exact.hit() ? voxelAt(rays[i].origin + exact.t * rays[i].direction) : 0.0f;
+        tolerances[i] = 2.0f * voxel;
+        finestHits += exact.hit() && voxel == sdfs.cascadeGrid(0).voxelSize;
+        coarserHits += exact.hit() && voxel != sdfs.cascadeGrid(0).voxelSize;
+    }
+    const Agreement a = compare(scene, bvh, rays, far, [&](uint32_t, size_t ray) { return tolerances[ray]; });
+    std::printf(
+        "far field over 3 cascades: %u of %u rays agree, %u hit both (%u in the finest cascade, %u in "
+        "coarser ones), %u within two voxels of their cascade (worst %.2f), %u same instance, %u normals "
+        "aligned\n",
+        a.agree, a.rays, a.bothHit, finestHits, coarserHits, a.withinTolerance, a.worst, a.sameInstance,
+        a.normalsAligned);
+    // Rays come from outside the scene: each crosses from the coarsest cascade into finer ones.
+    EXPECT_GT(finestHits, a.rays / 50);
+    EXPECT_GT(coarserHits, a.rays / 20);
+    EXPECT_GE(double(a.agree), 0.97 * a.rays);
+    EXPECT_GE(double(a.withinTolerance), 0.97 * a.bothHit);
+    EXPECT_GE(double(a.sameInstance), 0.95 * a.bothHit);
+    EXPECT_GE(double(a.normalsAligned), 0.9 * a.bothHit);
 }
 
 LUMINA_INSTANTIATE_GPU_TEST(SceneSdfGpuTest);
