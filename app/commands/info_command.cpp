@@ -1,6 +1,7 @@
 // `lumina info SCENE`: loads a scene (a built-in's name or a path) and prints what it holds:
 // counts, bounds, camera, units, lights and every repair the loader made. Needs no GPU.
 #include "app/command.h"
+#include "app/commands/scene_options.h"
 #include "gi/scene/builtin_scenes.h"
 #include "gi/scene/generators/generators.h"
 #include "gi/scene/scene_loader.h"
@@ -60,7 +61,7 @@ int runInfo(const ParsedArgs& args) {
             "info takes one scene: a built-in name or a .json, .gltf or .glb path (see lumina info "
             "--help)");
     }
-    scene::LoadOptions options;
+    scene::LoadOptions options = sceneLoadOptions(args);
     if (args.has("instances")) {
         options.instances = uint32_t(args.getUint("instances", 0, 1, scene::kCityMaxBuildings));
     }
@@ -115,7 +116,13 @@ int runInfo(const ParsedArgs& args) {
     printRow("", "vertical fov " + format(glm::degrees(camera.fovY)) + " deg, near " +
                      format(camera.nearPlane) + ", far " + format(camera.farPlane));
     printRow("units", format(loaded.units.metresPerUnit) + " m per scene unit");
-    printRow("sky", "radiance " + format(loaded.sky));
+    printRow("sky", loaded.skyEnvironment
+                        ? "environment " + loaded.skyEnvironment->file.generic_string() + " (" +
+                              std::to_string(loaded.skyEnvironment->width) + "x" +
+                              std::to_string(loaded.skyEnvironment->height) + ", intensity " +
+                              format(loaded.skyEnvironment->intensity) + ")"
+                        : "radiance " + format(loaded.sky));
+    printRow("", lightingLine(loaded));
     printRow("image", std::to_string(loaded.image.width) + "x" + std::to_string(loaded.image.height) +
                           (args.common.size ? " (from --size)" : ""));
     printRow("technique", loaded.technique.empty() ? "(renderer default)" : loaded.technique);
@@ -156,7 +163,8 @@ Command infoCommand() {
             .summary = "load a scene and print what it holds",
             .usage = "lumina info SCENE [--instances N] [--size WxH]",
             .description = description,
-            .flags = {{"instances", "N", "building count of a generated city (default 1024)"}},
+            .flags =
+                withSceneLoadFlags({{"instances", "N", "building count of a generated city (default 1024)"}}),
             .run = runInfo};
 }
 

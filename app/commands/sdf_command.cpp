@@ -2,6 +2,7 @@
 // atlas, composes the global SDF on the GPU, and on request writes a slice of it, a normal
 // view traced through the SDFs, and a trace throughput benchmark (docs/sdf.md).
 #include "app/command.h"
+#include "app/commands/scene_options.h"
 #include "gi/core/frame_context.h"
 #include "gi/core/pipeline_cache.h"
 #include "gi/core/timing_table.h"
@@ -124,7 +125,7 @@ int runSdf(const ParsedArgs& args) {
     if (args.positional.size() != 1) {
         throw UsageError("sdf takes one scene: a built-in name or a scene path (see lumina sdf --help)");
     }
-    scene::LoadOptions loadOptions;
+    scene::LoadOptions loadOptions = sceneLoadOptions(args);
     if (args.has("instances")) {
         loadOptions.instances = uint32_t(args.getUint("instances", 0, 1, scene::kCityMaxBuildings));
     }
@@ -231,17 +232,18 @@ Command sdfCommand() {
             "scene camera traced through the SDFs (--field near|far|cone), --trace-bench the GPU time and "
             "rays per second of camera rays traced through each field (--size, --frames). docs/sdf.md has "
             "the details and measured figures.",
-        .flags = {{"resolution", "N", "mesh SDF voxels along each mesh's longest axis (default 64)"},
-                  {"global-resolution", "N", "global SDF voxels along the scene's longest axis (default 64)"},
-                  {"slice-png", "PATH", "write a colour-mapped z slice of the global SDF"},
-                  {"slice-z", "N", "the slice's voxel index along z (default: the middle)"},
-                  {"normals-png", "PATH", "write the scene camera's normal view traced through the SDFs"},
-                  {"field", "NAME", "what --normals-png traces: near (default), far or cone"},
-                  {"trace-bench", "", "measure trace throughput (rays/s) of each field"},
-                  {"instances", "N", "building count of a generated city (default 1024)"},
-                  {"build-only", "", "stop after building the mesh SDFs (no GPU)"},
-                  {"no-cache", "", "build every mesh SDF, neither loading nor storing the cache"},
-                  {"r32f", "", "store the atlas as R32F instead of R16F"}},
+        .flags = withSceneLoadFlags(
+            {{"resolution", "N", "mesh SDF voxels along each mesh's longest axis (default 64)"},
+             {"global-resolution", "N", "global SDF voxels along the scene's longest axis (default 64)"},
+             {"slice-png", "PATH", "write a colour-mapped z slice of the global SDF"},
+             {"slice-z", "N", "the slice's voxel index along z (default: the middle)"},
+             {"normals-png", "PATH", "write the scene camera's normal view traced through the SDFs"},
+             {"field", "NAME", "what --normals-png traces: near (default), far or cone"},
+             {"trace-bench", "", "measure trace throughput (rays/s) of each field"},
+             {"instances", "N", "building count of a generated city (default 1024)"},
+             {"build-only", "", "stop after building the mesh SDFs (no GPU)"},
+             {"no-cache", "", "build every mesh SDF, neither loading nor storing the cache"},
+             {"r32f", "", "store the atlas as R32F instead of R16F"}}),
         .run = runSdf};
 }
 

@@ -4,7 +4,7 @@ namespace lumina::gi {
 
 LumenGi::LumenGi(rhi::IDevice& device, const scene::Scene& scene, const GpuScene& gpuScene, uint32_t width,
                  uint32_t height, const LumenSettings& settings)
-    : settings_(settings), sky_(scene.sky), sdf_(device, scene, settings.sdf),
+    : settings_(settings), sky_(gpuScene.sky), sdf_(device, scene, settings.sdf),
       cache_(device, scene, gpuScene, sdf_, settings.cache, settings.lighting),
       probes_(device, width, height, settings.probes) {}
 

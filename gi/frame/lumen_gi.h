@@ -44,7 +44,7 @@ public:
 
 private:
     LumenSettings settings_;
-    glm::vec3 sky_;
+    rhi::TextureHandle sky_; // the GpuScene's: what probe rays that leave the scene see
     sdf::SceneSdf sdf_;
     surface_cache::SurfaceCache cache_;
     ScreenProbeGather probes_;
