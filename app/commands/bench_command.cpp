@@ -278,7 +278,8 @@ Command benchCommand() {
         .summary = "time every technique and preset and measure its error against the path tracer",
         .usage =
             "lumina bench [--scenes A,B] [--techniques direct,lumen,pathtracer] [--presets low,medium,high] "
-            "[--pt-budgets 1,4,16] [--size WxH] [--frames N] [--reference-spp N] [--cache DIR] [--out DIR]",
+            "[--pt-budgets 1,4,16] [--size WxH] [--frames N] [--reference-spp N] [--cache DIR] [--out DIR] "
+            "[--no-default-light] [--sky FILE.exr [--sky-intensity K]]",
         .description =
             "For each scene, renders a path-traced reference with AOVs (or reuses the one cached for the "
             "same "

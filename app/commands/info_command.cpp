@@ -161,7 +161,8 @@ Command infoCommand() {
         "problem (exit code 1). docs/scenes.md describes scene files and units.";
     return {.name = "info",
             .summary = "load a scene and print what it holds",
-            .usage = "lumina info SCENE [--instances N] [--size WxH]",
+            .usage = "lumina info SCENE [--instances N] [--size WxH] [--no-default-light] [--sky FILE.exr "
+                     "[--sky-intensity K]]",
             .description = description,
             .flags =
                 withSceneLoadFlags({{"instances", "N", "building count of a generated city (default 1024)"}}),

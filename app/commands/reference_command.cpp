@@ -253,7 +253,8 @@ Command referenceCommand() {
         .name = "reference",
         .summary = "path-trace the ground-truth image of a scene (EXR with variance and AOVs)",
         .usage = "lumina reference SCENE [--spp N] [--target-error E] [--out ref.exr] [--size WxH] [--aovs] "
-                 "[--max-bounces N] [--seed N] [--png PATH]",
+                 "[--max-bounces N] [--seed N] [--png PATH] [--no-default-light] [--sky FILE.exr "
+                 "[--sky-intensity K]]",
         .description =
             "Renders SCENE (a built-in name or a scene/glTF path) with the reference path tracer on the GPU: "
             "the same camera, pixel footprint, units and lights as the real-time renderer "

@@ -216,7 +216,8 @@ Command renderCommand() {
         .summary = "render a scene in real time: deferred direct light plus GI (lumen)",
         .usage = "lumina render SCENE [--technique direct|lumen] [--preset low|medium|high] [--out img.png] "
                  "[--exr img.exr] [--dump-buffers DIR] [--timings] [--timings-json PATH] [--frames N] "
-                 "[--warmup N] [--exposure EV] [--size WxH]",
+                 "[--warmup N] [--exposure EV] [--size WxH] [--no-default-light] [--sky FILE.exr "
+                 "[--sky-intensity K]]",
         .description =
             "Renders SCENE (a built-in name or a scene/glTF path) in real time: GBuffer, sun shadow map, "
             "point and spot light cube shadows and direct light (docs/deferred.md); with the lumen "
