@@ -5,6 +5,7 @@
 // log-log plot of error against frame time (scripts/plot_bench.py, python3-matplotlib).
 // docs/measurement.md.
 #include "app/command.h"
+#include "app/commands/scene_options.h"
 #include "gi/bench/bench_report.h"
 #include "gi/bench/reference_cache.h"
 #include "gi/bench/technique_runs.h"
@@ -180,7 +181,7 @@ int runBench(const ParsedArgs& args) {
     // Load every scene first: a typo fails before any GPU work.
     std::vector<scene::Scene> scenes;
     for (const std::string& name : sceneNames) {
-        scenes.push_back(scene::loadScene(name));
+        scenes.push_back(scene::loadScene(name, sceneLoadOptions(args)));
     }
     std::filesystem::create_directories(outDir);
 
@@ -276,7 +277,8 @@ Command benchCommand() {
         .summary = "time every technique and preset and measure its error against the path tracer",
         .usage =
             "lumina bench [--scenes A,B] [--techniques direct,lumen,pathtracer] [--presets low,medium,high] "
-            "[--pt-budgets 1,4,16] [--size WxH] [--frames N] [--reference-spp N] [--cache DIR] [--out DIR]",
+            "[--pt-budgets 1,4,16] [--size WxH] [--frames N] [--reference-spp N] [--cache DIR] [--out DIR] "
+            "[--no-default-light] [--sky FILE.exr [--sky-intensity K]]",
         .description =
             "For each scene, renders a path-traced reference with AOVs (or reuses the one cached for the "
             "same "
@@ -298,15 +300,16 @@ Command benchCommand() {
             "frame time on log-log axes (python3-matplotlib). lumen is not in the default list: on lavapipe "
             "it costs seconds a frame until its surface cache converges; name it with --techniques. "
             "docs/measurement.md has the columns.",
-        .flags = {{"scenes", "LIST",
-                   "comma-separated scenes (default cornell_box,cornell_box_point,open_top_box)"},
-                  {"techniques", "LIST", "direct, lumen, pathtracer (default direct,pathtracer)"},
-                  {"presets", "LIST", "presets of direct and lumen: low, medium, high (default all)"},
-                  {"pt-budgets", "LIST",
-                   "path-tracer frame budgets in multiples of lumen's frame, else direct's (default 1,4,16)"},
-                  {"reference-spp", "N", "samples per pixel of the references (default 256)"},
-                  {"cache", "DIR", "where references are kept (default $LUMINA_CACHE_DIR/references)"},
-                  {"no-plot", "", "write the CSV and JSON only"}},
+        .flags = withSceneLoadFlags(
+            {{"scenes", "LIST",
+              "comma-separated scenes (default cornell_box,cornell_box_point,open_top_box)"},
+             {"techniques", "LIST", "direct, lumen, pathtracer (default direct,pathtracer)"},
+             {"presets", "LIST", "presets of direct and lumen: low, medium, high (default all)"},
+             {"pt-budgets", "LIST",
+              "path-tracer frame budgets in multiples of lumen's frame, else direct's (default 1,4,16)"},
+             {"reference-spp", "N", "samples per pixel of the references (default 256)"},
+             {"cache", "DIR", "where references are kept (default $LUMINA_CACHE_DIR/references)"},
+             {"no-plot", "", "write the CSV and JSON only"}}),
         .run = runBench};
 }
 

@@ -1,6 +1,7 @@
 // `lumina info SCENE`: loads a scene (a built-in's name or a path) and prints what it holds:
 // counts, bounds, camera, units, lights and every repair the loader made. Needs no GPU.
 #include "app/command.h"
+#include "app/commands/scene_options.h"
 #include "gi/frame/gi_technique.h"
 #include "gi/scene/builtin_scenes.h"
 #include "gi/scene/generators/generators.h"
@@ -76,7 +77,7 @@ int runInfo(const ParsedArgs& args) {
             "info takes one scene: a built-in name or a .json, .gltf or .glb path (see lumina info "
             "--help)");
     }
-    scene::LoadOptions options;
+    scene::LoadOptions options = sceneLoadOptions(args);
     if (args.has("instances")) {
         options.instances = uint32_t(args.getUint("instances", 0, 1, scene::kCityMaxBuildings));
     }
@@ -131,7 +132,13 @@ int runInfo(const ParsedArgs& args) {
     printRow("", "vertical fov " + format(glm::degrees(camera.fovY)) + " deg, near " +
                      format(camera.nearPlane) + ", far " + format(camera.farPlane));
     printRow("units", format(loaded.units.metresPerUnit) + " m per scene unit");
-    printRow("sky", "radiance " + format(loaded.sky));
+    printRow("sky", loaded.skyEnvironment
+                        ? "environment " + loaded.skyEnvironment->file.generic_string() + " (" +
+                              std::to_string(loaded.skyEnvironment->width) + "x" +
+                              std::to_string(loaded.skyEnvironment->height) + ", intensity " +
+                              format(loaded.skyEnvironment->intensity) + ")"
+                        : "radiance " + format(loaded.sky));
+    printRow("", lightingLine(loaded));
     printRow("image", std::to_string(loaded.image.width) + "x" + std::to_string(loaded.image.height) +
                           (args.common.size ? " (from --size)" : ""));
     printRow("technique", loaded.technique.empty() ? "(renderer default)" : loaded.technique);
@@ -172,12 +179,14 @@ Command infoCommand() {
         "problem (exit code 1). docs/scenes.md describes scene files and units.";
     return {.name = "info",
             .summary = "load a scene and print what it holds",
-            .usage = "lumina info SCENE [--instances N] [--size WxH] [--preset P]",
+            .usage = "lumina info SCENE [--instances N] [--size WxH] [--preset P] [--no-default-light] [--sky "
+                     "FILE.exr [--sky-intensity K]]",
             .description = description,
-            .flags = {{"instances", "N", "building count of a generated city (default 1024)"},
-                      {"preset", "P",
-                       "the GI preset whose surface cache to describe (low, medium, high; default the "
-                       "scene's, else medium)"}},
+            .flags = withSceneLoadFlags(
+                {{"instances", "N", "building count of a generated city (default 1024)"},
+                 {"preset", "P",
+                  "the GI preset whose surface cache to describe (low, medium, high; default the "
+                  "scene's, else medium)"}}),
             .run = runInfo};
 }
 

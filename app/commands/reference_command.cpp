@@ -21,6 +21,7 @@
 #endif
 
 #include "app/command.h"
+#include "app/commands/scene_options.h"
 #include "gi/core/frame_context.h"
 #include "gi/core/pipeline_cache.h"
 #include "gi/image/exr.h"
@@ -120,7 +121,7 @@ int runReference(const ParsedArgs& args) {
     settings.jitter = !args.has("pixel-centres");
 
     const std::string& name = args.positional.front();
-    scene::Scene loaded = scene::loadScene(name);
+    scene::Scene loaded = scene::loadScene(name, sceneLoadOptions(args));
     if (args.common.size) {
         settings.width = args.common.size->width;
         settings.height = args.common.size->height;
@@ -252,7 +253,8 @@ Command referenceCommand() {
         .name = "reference",
         .summary = "path-trace the ground-truth image of a scene (EXR with variance and AOVs)",
         .usage = "lumina reference SCENE [--spp N] [--target-error E] [--out ref.exr] [--size WxH] [--aovs] "
-                 "[--max-bounces N] [--seed N] [--png PATH]",
+                 "[--max-bounces N] [--seed N] [--png PATH] [--no-default-light] [--sky FILE.exr "
+                 "[--sky-intensity K]]",
         .description =
             "Renders SCENE (a built-in name or a scene/glTF path) with the reference path tracer on the GPU: "
             "the same camera, pixel footprint, units and lights as the real-time renderer "
@@ -262,13 +264,14 @@ Command referenceCommand() {
             "albedo.*, normal.X/Y/Z, direct.* (at most one bounce) and indirect.* (two or more). At the end "
             "it "
             "prints samples/s and rays/s. The same seed gives the same image.",
-        .flags = {{"spp", "N", "samples per pixel (default 256; the cap with --target-error: 65536)"},
-                  {"target-error", "E",
-                   "stop once the mean relative standard error of the pixels falls below E (e.g. 0.01)"},
-                  {"aovs", "", "also write albedo, normal, direct and indirect channels"},
-                  {"max-bounces", "N", "scattering events per path (default 1024; roulette ends most paths)"},
-                  {"pixel-centres", "", "sample pixel centres only (no antialiasing), like a rasteriser"},
-                  {"png", "PATH", "also write a tonemapped PNG preview"}},
+        .flags = withSceneLoadFlags(
+            {{"spp", "N", "samples per pixel (default 256; the cap with --target-error: 65536)"},
+             {"target-error", "E",
+              "stop once the mean relative standard error of the pixels falls below E (e.g. 0.01)"},
+             {"aovs", "", "also write albedo, normal, direct and indirect channels"},
+             {"max-bounces", "N", "scattering events per path (default 1024; roulette ends most paths)"},
+             {"pixel-centres", "", "sample pixel centres only (no antialiasing), like a rasteriser"},
+             {"png", "PATH", "also write a tonemapped PNG preview"}}),
         .run = runReference};
 }
 

@@ -3,6 +3,7 @@
 // composite) rendered on the GPU and written as a PNG, optionally with the linear HDR result as
 // EXR, every intermediate buffer, and the GPU time of each pass.
 #include "app/command.h"
+#include "app/commands/scene_options.h"
 #include "gi/core/build_info.h"
 #include "gi/core/frame_context.h"
 #include "gi/core/pipeline_cache.h"
@@ -108,7 +109,7 @@ int runRender(const ParsedArgs& args) {
     }
     const auto exposure = static_cast<float>(args.getDouble("exposure", 0.0));
 
-    scene::Scene loaded = scene::loadScene(args.positional.front());
+    scene::Scene loaded = scene::loadScene(args.positional.front(), sceneLoadOptions(args));
     if (args.common.size) {
         loaded.image = {args.common.size->width, args.common.size->height};
     }
@@ -134,6 +135,7 @@ int runRender(const ParsedArgs& args) {
     std::cout << "scene: " << loaded.name << ", " << loaded.triangleCount() << " triangles, "
               << loaded.lights.size() << " light(s), " << loaded.image.width << "x" << loaded.image.height
               << '\n';
+    std::cout << lightingLine(loaded) << '\n';
 
     gi::FrameRendererSettings settings = rendererSettings(args, loaded, exposure);
     const bool lumen = settings.technique == gi::GiTechnique::Lumen;
@@ -250,7 +252,8 @@ Command renderCommand() {
         .summary = "render a scene in real time: deferred direct light plus GI (lumen)",
         .usage = "lumina render SCENE [--technique direct|lumen] [--preset low|medium|high] [--out img.png] "
                  "[--exr img.exr] [--dump-buffers DIR] [--timings] [--timings-json PATH] [--frames N] "
-                 "[--warmup N] [--exposure EV] [--size WxH]",
+                 "[--warmup N] [--exposure EV] [--size WxH] [--no-default-light] [--sky FILE.exr "
+                 "[--sky-intensity K]]",
         .description =
             "Renders SCENE (a built-in name or a scene/glTF path) in real time: GBuffer, sun shadow map, "
             "point and spot light cube shadows and direct light (docs/deferred.md); with the lumen "
@@ -267,21 +270,21 @@ Command renderCommand() {
             "and PNG. --timings prints the median GPU time of each pass from timestamp queries and how "
             "often each pass was skipped and why (shadow maps and surface-cache passes run only when "
             "something they read changed).",
-        .flags = {{"technique", "NAME",
-                   "GI technique: direct (none) or lumen (default: the scene's, else lumen)"},
-                  {"preset", "NAME",
-                   "lumen quality preset: low, medium or high (default: the scene's, else medium)"},
-                  {"probe-spacing", "N", "pixels per screen-probe edge (overrides the preset; 2..64)"},
-                  {"rays-per-probe", "N", "rays per screen probe (overrides the preset; 16..256)"},
-                  {"near-field-distance", "D",
-                   "screen-probe near-field trace length in scene units (0: far field only; default: the "
-                   "preset's, a tenth of the scene's largest extent)"},
-                  {"exr", "PATH", "also write the linear HDR result as EXR"},
-                  {"dump-buffers", "DIR", "write every intermediate buffer into DIR"},
-                  {"timings", "", "print the GPU time per pass (direct: 60 frames unless --frames)"},
-                  {"timings-json", "PATH", "write the per-pass timings as JSON"},
-                  {"warmup", "N", "frames left out of the timings (default 0)"},
-                  {"exposure", "EV", "exposure in stops before the tonemap (default 0)"}},
+        .flags = withSceneLoadFlags(
+            {{"technique", "NAME", "GI technique: direct (none) or lumen (default: the scene's, else lumen)"},
+             {"preset", "NAME",
+              "lumen quality preset: low, medium or high (default: the scene's, else medium)"},
+             {"probe-spacing", "N", "pixels per screen-probe edge (overrides the preset; 2..64)"},
+             {"rays-per-probe", "N", "rays per screen probe (overrides the preset; 16..256)"},
+             {"near-field-distance", "D",
+              "screen-probe near-field trace length in scene units (0: far field only; default: the "
+              "preset's, a tenth of the scene's largest extent)"},
+             {"exr", "PATH", "also write the linear HDR result as EXR"},
+             {"dump-buffers", "DIR", "write every intermediate buffer into DIR"},
+             {"timings", "", "print the GPU time per pass (direct: 60 frames unless --frames)"},
+             {"timings-json", "PATH", "write the per-pass timings as JSON"},
+             {"warmup", "N", "frames left out of the timings (default 0)"},
+             {"exposure", "EV", "exposure in stops before the tonemap (default 0)"}}),
         .run = runRender};
 }
 

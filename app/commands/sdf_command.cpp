@@ -2,6 +2,7 @@
 // atlas, composes the global SDF on the GPU, and on request writes a slice of it, a normal
 // view traced through the SDFs, and a trace throughput benchmark (docs/sdf.md).
 #include "app/command.h"
+#include "app/commands/scene_options.h"
 #include "gi/core/frame_context.h"
 #include "gi/core/pipeline_cache.h"
 #include "gi/core/timing_table.h"
@@ -155,7 +156,7 @@ int runSdf(const ParsedArgs& args) {
     if (args.positional.size() != 1) {
         throw UsageError("sdf takes one scene: a built-in name or a scene path (see lumina sdf --help)");
     }
-    scene::LoadOptions loadOptions;
+    scene::LoadOptions loadOptions = sceneLoadOptions(args);
     if (args.has("instances")) {
         loadOptions.instances = uint32_t(args.getUint("instances", 0, 1, scene::kCityMaxBuildings));
     }
@@ -255,9 +256,9 @@ Command sdfCommand() {
     return {
         .name = "sdf",
         .summary = "build a scene's mesh SDFs and global SDF; slice, normal view, trace benchmark",
-        .usage =
-            "lumina sdf SCENE [--resolution N] [--global-resolution N] [--slice-png PATH] "
-            "[--normals-png PATH] [--trace-bench] [--camera-step N] [--build-only] [--no-cache] [--size WxH]",
+        .usage = "lumina sdf SCENE [--resolution N] [--global-resolution N] [--slice-png PATH] "
+                 "[--normals-png PATH] [--trace-bench] [--camera-step N] [--build-only] [--no-cache] [--size WxH]"
+                 " [--no-default-light] [--sky FILE.exr [--sky-intensity K]]",
         .description =
             "Builds every mesh SDF of SCENE (N voxels along each mesh's longest axis), or loads it from the "
             "cache ($LUMINA_CACHE_DIR/sdf, else the user cache folder), printing each mesh's time and the "
@@ -269,7 +270,7 @@ Command sdfCommand() {
             "scene camera traced through the SDFs (--field near|far|cone), --trace-bench the GPU time and "
             "rays per second of camera rays traced through each field (--size, --frames). docs/sdf.md has "
             "the details and measured figures.",
-        .flags =
+        .flags = withSceneLoadFlags(
             {{"resolution", "N", "mesh SDF voxels along each mesh's longest axis (default 64)"},
              {"global-resolution", "N",
               "global SDF voxels along the scene's longest axis, or per cascade side (default 64)"},
@@ -283,7 +284,7 @@ Command sdfCommand() {
               "then move the camera 4 times by N finest global voxels along +x, printing each recompose"},
              {"build-only", "", "stop after building the mesh SDFs (no GPU)"},
              {"no-cache", "", "build every mesh SDF, neither loading nor storing the cache"},
-             {"r32f", "", "store the atlas as R32F instead of R16F"}},
+             {"r32f", "", "store the atlas as R32F instead of R16F"}}),
         .run = runSdf};
 }
 

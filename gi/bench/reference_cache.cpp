@@ -70,6 +70,10 @@ uint64_t sceneDigest(const scene::Scene& scene) {
                                 light.direction.z,    float(int(light.type))};
         hash = sdf::fnv1a64(fields, sizeof(fields), hash);
     }
+    if (scene.skyEnvironment) { // only then: the keys of uniform skies stay as they were
+        hash = hashValue(scene.skyEnvironment->width, hash);
+        hash = hashSpan(scene.skyEnvironment->radiance, hash);
+    }
     const scene::Camera& camera = scene.camera;
     const float cameraFields[] = {camera.position.x, camera.position.y, camera.position.z, camera.forward.x,
                                   camera.forward.y,  camera.forward.z,  camera.up.x,       camera.up.y,

@@ -39,7 +39,7 @@ rhi::BufferHandle createConstantBuffer(rhi::IDevice& device, uint64_t size, cons
 DeferredRenderer::DeferredRenderer(rhi::IDevice& device, const scene::Scene& scene, const GpuScene& gpuScene,
                                    DeferredSettings settings)
     : device_(device), scene_(scene), settings_(resolved(std::move(settings), scene)), camera_(scene.camera),
-      bounds_(scene.worldBounds()), gbufferPass_(scene, gpuScene),
+      bounds_(scene.worldBounds()), sky_(gpuScene.sky), gbufferPass_(scene, gpuScene),
       sunShadow_(device, gpuScene, settings_.sunShadowSize),
       pointShadow_(device, gpuScene, settings_.pointShadowSize), composite_(device) {
     const uint32_t w = settings_.width, h = settings_.height;
@@ -91,7 +91,6 @@ void DeferredRenderer::uploadConstants(rhi::ICommandList& commands, const std::o
                                        const std::vector<glm::vec4>& cubes) {
     gpu::DeferredFrameConstants frame{};
     frame.camera = makeGpuCamera(camera_, settings_.width, settings_.height);
-    frame.sky = gpu::float4(scene_.sky, 0.0f);
     frame.counts = gpu::uint4(uint32_t(lights_.lights.size()), settings_.width, settings_.height, 0u);
     commands.writeBuffer(*frameConstants_, &frame, sizeof(frame));
 
@@ -151,7 +150,8 @@ void DeferredRenderer::recordLighting(FrameContext& frame) {
                          .shadowConstants = shadowConstants_,
                          .lights = lightBuffer_,
                          .sunShadowMap = sunShadow_.map(),
-                         .pointShadowMaps = pointShadow_.maps()},
+                         .pointShadowMaps = pointShadow_.maps(),
+                         .sky = sky_},
                         direct_);
 }
 

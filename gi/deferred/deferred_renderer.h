@@ -102,6 +102,7 @@ private:
     uint64_t lightsVersion_ = 0;
     scene::Bounds bounds_;
     uint64_t geometryVersion_ = 0;
+    rhi::TextureHandle sky_; // the GpuScene's
     rhi::TextureHandle indirect_;
     float indirectScale_ = 1.0f;
 

@@ -21,6 +21,7 @@ void DirectLightPass::record(FrameContext& frame, const DirectLightInputs& input
         .read(4, inputs.sunShadowMap)
         .bind(pointMaps)
         .read(6, inputs.lights)
+        .read(7, inputs.sky)
         .write(0, direct)
         .dispatchThreads(size.width, size.height, {LUMINA_DEFERRED_GROUP_SIZE, LUMINA_DEFERRED_GROUP_SIZE});
 }

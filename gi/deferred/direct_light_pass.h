@@ -14,6 +14,7 @@ struct DirectLightInputs {
     rhi::BufferHandle lights;           // DeferredLight[], at least one element
     rhi::TextureHandle sunShadowMap;    // D32
     rhi::TextureHandle pointShadowMaps; // R32F cube array
+    rhi::TextureHandle sky;             // the GpuScene's sky: what pixels without a surface show
 };
 
 class DirectLightPass {

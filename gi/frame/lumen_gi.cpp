@@ -4,7 +4,7 @@ namespace lumina::gi {
 
 LumenGi::LumenGi(rhi::IDevice& device, const scene::Scene& scene, const GpuScene& gpuScene, uint32_t width,
                  uint32_t height, const LumenSettings& settings)
-    : settings_(settings), sky_(scene.sky), beforeSdf_(device.allocatedMemoryBytes()),
+    : settings_(settings), sky_(gpuScene.sky), beforeSdf_(device.allocatedMemoryBytes()),
       sdf_(device, scene, settings.sdf), afterSdf_(device.allocatedMemoryBytes()),
       cache_(device, scene, gpuScene, sdf_, settings.cache, settings.lighting),
       afterCache_(device.allocatedMemoryBytes()), probes_(device, width, height, settings.probes),

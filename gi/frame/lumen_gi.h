@@ -56,7 +56,7 @@ private:
     // The allocation marks are members between the subsystems so that members' construction
     // order measures each one.
     LumenSettings settings_;
-    glm::vec3 sky_;
+    rhi::TextureHandle sky_; // the GpuScene's: what probe rays that leave the scene see
     uint64_t beforeSdf_;
     sdf::SceneSdf sdf_;
     uint64_t afterSdf_;

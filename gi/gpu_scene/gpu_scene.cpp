@@ -1,5 +1,7 @@
 #include "gi/gpu_scene/gpu_scene.h"
 
+#include "gi/gpu_scene/sky_texture.h"
+
 #include <algorithm>
 #include <string>
 
@@ -112,6 +114,10 @@ GpuScene::GpuScene(rhi::IDevice& device, const scene::Scene& scene) {
     upload->end();
     rhi::IQueue& queue = device.queue(rhi::QueueType::Graphics);
     queue.waitForValue(queue.submit(*upload));
+
+    const SkyTextureData skyData = packSky(scene);
+    sky = createSkyTexture(device, skyData);
+    stats_.skyBytes = skyData.texels.size() * sizeof(gpu::float4);
 
     materialSampler = device.createSampler({.addressU = rhi::AddressMode::Wrap,
                                             .addressV = rhi::AddressMode::Wrap,

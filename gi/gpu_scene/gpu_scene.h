@@ -2,7 +2,7 @@
 // The scene on the GPU, uploaded once and shared by every renderer (deferred, path tracer,
 // surface cache): one vertex buffer, one index buffer of absolute indices, instances,
 // materials, material textures in one 2D texture array (lavapipe has no descriptor
-// indexing, so "bindless" is a layer index), and the draw list.
+// indexing, so "bindless" is a layer index), the sky, and the draw list.
 #include <cstdint>
 #include <vector>
 
@@ -22,6 +22,7 @@ struct GpuSceneStats {
     uint64_t vertexBytes = 0;
     uint64_t indexBytes = 0;
     uint64_t textureBytes = 0;
+    uint64_t skyBytes = 0;
     uint32_t textureLayerSize = 0;
 };
 
@@ -30,12 +31,13 @@ public:
     // Uploads `scene`; throws rhi::Error when it exceeds what the device takes.
     GpuScene(rhi::IDevice& device, const scene::Scene& scene);
 
-    rhi::BufferHandle vertices;  // GpuVertex[]
-    rhi::BufferHandle indices;   // uint32 absolute indices (Index usage and structured)
-    rhi::BufferHandle instances; // GpuInstance[]
-    rhi::BufferHandle materials; // GpuMaterial[]
-    rhi::TextureHandle textures; // RGBA8_SRGB 2D array, full mip chain; a white layer when none
+    rhi::BufferHandle vertices;         // GpuVertex[]
+    rhi::BufferHandle indices;          // uint32 absolute indices (Index usage and structured)
+    rhi::BufferHandle instances;        // GpuInstance[]
+    rhi::BufferHandle materials;        // GpuMaterial[]
+    rhi::TextureHandle textures;        // RGBA8_SRGB 2D array, full mip chain; a white layer when none
     rhi::SamplerHandle materialSampler; // trilinear, wrap
+    rhi::TextureHandle sky;             // RGBA32F latitude-longitude radiance (sky_texture.h)
 
     const std::vector<SceneDraw>& draws() const { return draws_; }
     const GpuSceneStats& stats() const { return stats_; }

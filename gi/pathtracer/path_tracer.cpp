@@ -52,7 +52,6 @@ PathTracer::PathTracer(rhi::IDevice& device, const PathTracerScene& traced, cons
     }
     gpu::PathTraceConstants constants{};
     constants.camera = makeGpuCamera(scene.camera, settings_.width, settings_.height);
-    constants.sky = gpu::float4(scene.sky, 0.0f);
     const uint32_t flags =
         (settings_.jitter ? LUMINA_PT_FLAG_JITTER : 0u) | (settings_.aovs ? LUMINA_PT_FLAG_AOVS : 0u);
     constants.counts =
@@ -94,6 +93,7 @@ void PathTracer::recordSamples(FrameContext& frame, uint32_t count) {
                 .read(8, traced_.emitterAlias)
                 .read(9, traced_.lights)
                 .read(10, scene.textures)
+                .read(11, scene.sky)
                 .sampler(0, scene.materialSampler)
                 .write(0, mean_)
                 .write(1, m2_)

@@ -27,6 +27,7 @@ constexpr std::array kBuiltins = {
     BuiltinScene{"furnace_0.99", [] { return makeFurnace(0.99f); }},
     BuiltinScene{"atrium", nullptr},
     BuiltinScene{"city", nullptr},
+    BuiltinScene{"two_cylinder_engine", nullptr}, // a glTF of assimp-testmodels
 };
 
 std::optional<fs::path> executableDirectory() {

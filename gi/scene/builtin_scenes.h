@@ -14,7 +14,8 @@ namespace lumina::scene {
 
 struct BuiltinScene {
     std::string_view name;
-    // Makes the scene that scenes/<name>/ holds as files; null for scenes generated at load.
+    // Makes the scene that scenes/<name>/ holds as files; null for scenes generated at load
+    // and for scene files naming a glTF from elsewhere (two_cylinder_engine: assimp-testmodels).
     Scene (*make)() = nullptr;
 };
 

@@ -30,6 +30,14 @@ const char* lightTypeName(LightType type) {
     return "unknown";
 }
 
+bool Scene::hasSky() const {
+    if (skyEnvironment) {
+        return std::any_of(skyEnvironment->radiance.begin(), skyEnvironment->radiance.end(),
+                           [](const glm::vec3& texel) { return texel.x + texel.y + texel.z > 0.0f; });
+    }
+    return sky.x + sky.y + sky.z > 0.0f;
+}
+
 uint64_t Scene::triangleCount() const {
     uint64_t total = 0;
     for (const Instance& instance : instances) {

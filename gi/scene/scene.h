@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <glm/glm.hpp>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -147,6 +148,18 @@ struct LoadReport {
     uint64_t normalsRepaired = 0;
 };
 
+// An equirectangular sky (docs/scenes.md, "Sky"): texel (x, y) holds the radiance arriving from
+// the direction at longitude 2 pi ((x + 0.5) / width - 0.5) about +y, measured from -z towards
+// +x, and polar angle pi (y + 0.5) / height from +y: row 0 is the zenith, the middle column of
+// the image lies towards -z. sky_environment.h reads one from an EXR and samples it.
+struct SkyEnvironment {
+    std::filesystem::path file;
+    uint32_t width = 0;
+    uint32_t height = 0;
+    std::vector<glm::vec3> radiance; // rows top to bottom, the file's texels x intensity
+    float intensity = 1.0f;          // the factor already applied to `radiance`
+};
+
 struct Scene {
     std::string name;                 // built-in name, or the file's stem
     std::filesystem::path sourceFile; // the scene file or glTF that was loaded
@@ -161,7 +174,9 @@ struct Scene {
     std::vector<Light> lights;
     Camera camera;
     bool cameraFromFile = false; // false: framed from the bounds
-    glm::vec3 sky{0.0f};         // uniform sky radiance
+    glm::vec3 sky{0.0f};         // uniform sky radiance; ignored when skyEnvironment is set
+    std::optional<SkyEnvironment> skyEnvironment;
+    bool defaultLight = false; // the loader added the default sun and sky (default_light.h)
     ImageSize image;
     std::string technique; // GI technique name; empty: the renderer's default
     std::string preset;    // quality preset name; empty: the renderer's default
@@ -173,6 +188,8 @@ struct Scene {
     uint64_t vertexCount() const; // over meshes
     Bounds worldBounds() const;
     float aspect() const { return float(image.width) / float(image.height); }
+    // Whether any light reaches the scene from the sky (uniform or environment).
+    bool hasSky() const;
 };
 
 // A camera outside `bounds` looking along -z at its centre, far enough to see all of it.

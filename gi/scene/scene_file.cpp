@@ -3,6 +3,7 @@
 #include "gi/scene/generators/generators.h"
 #include "gi/scene/json_reader.h"
 #include "gi/scene/scene_error.h"
+#include "gi/scene/sky_environment.h"
 #include "gi/scene/units.h"
 
 #include <cmath>
@@ -143,6 +144,31 @@ SceneFileCamera parseCamera(const nlohmann::json& value, const std::filesystem::
     return camera;
 }
 
+// "sky": a uniform radiance [r, g, b], or {"environment": "file.exr", "intensity": k}.
+void parseSky(const JsonObject& root, const nlohmann::json& document, SceneFile& out) {
+    if (!root.has("sky")) {
+        return;
+    }
+    if (!document["sky"].is_object()) {
+        out.sky = root.vec3("sky");
+        if (glm::any(glm::lessThan(*out.sky, glm::vec3(0.0f)))) {
+            root.fail("sky", "must not be negative");
+        }
+        return;
+    }
+    const JsonObject object(*root.object("sky"), "sky", out.file, {"environment", "intensity"});
+    const std::optional<std::string> environment = object.string("environment");
+    if (!environment || environment->empty()) {
+        object.fail("environment", "is required: an equirectangular .exr, relative to the scene file");
+    }
+    out.skyEnvironment = out.file.parent_path() / std::filesystem::path(*environment);
+    const double intensity = object.number("intensity").value_or(1.0);
+    if (!(intensity >= 0.0) || !std::isfinite(float(intensity))) {
+        object.fail("intensity", "must be a finite number, not negative");
+    }
+    out.skyIntensity = float(intensity);
+}
+
 } // namespace
 
 SceneFile parseSceneFileText(std::string_view text, const std::filesystem::path& file) {
@@ -213,9 +239,7 @@ SceneFile parseSceneFileText(std::string_view text, const std::filesystem::path&
         light.intensity = float(*illuminance);
         out.sun = light;
     }
-    if ((out.sky = root.vec3("sky")) && glm::any(glm::lessThan(*out.sky, glm::vec3(0.0f)))) {
-        root.fail("sky", "must not be negative");
-    }
+    parseSky(root, document, out);
     if (const nlohmann::json* image = root.object("image")) {
         const JsonObject object(*image, "image", file, {"width", "height"});
         const auto width = object.unsignedInt("width", 1, kMaxImageSide);
@@ -273,6 +297,10 @@ void applySceneFile(const SceneFile& sceneFile, Scene& scene) {
     }
     if (sceneFile.sky) {
         scene.sky = *sceneFile.sky;
+        scene.skyEnvironment.reset();
+    }
+    if (sceneFile.skyEnvironment) {
+        scene.skyEnvironment = readSkyEnvironment(*sceneFile.skyEnvironment, sceneFile.skyIntensity);
     }
     if (sceneFile.image) {
         scene.image = *sceneFile.image;

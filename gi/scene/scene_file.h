@@ -33,7 +33,9 @@ struct SceneFile {
     std::vector<Light> lights; // intensities in file units (candela for point and spot)
     bool replaceLights = false;
     std::optional<Light> sun;
-    std::optional<glm::vec3> sky;
+    std::optional<glm::vec3> sky;                        // "sky": [r, g, b]
+    std::optional<std::filesystem::path> skyEnvironment; // "sky": {"environment": ...}, resolved
+    float skyIntensity = 1.0f;                           // "sky": {"intensity": ...}
     std::optional<ImageSize> image;
     std::optional<std::string> technique;
     std::optional<std::string> preset;

@@ -1,10 +1,12 @@
 #include "gi/scene/scene_loader.h"
 
 #include "gi/scene/builtin_scenes.h"
+#include "gi/scene/default_light.h"
 #include "gi/scene/generators/generators.h"
 #include "gi/scene/gltf_loader.h"
 #include "gi/scene/scene_error.h"
 #include "gi/scene/scene_file.h"
+#include "gi/scene/sky_environment.h"
 
 #include <cctype>
 #include <string>
@@ -36,6 +38,46 @@ Scene generate(const SceneFile& sceneFile, const LoadOptions& options) {
     return makeCity(buildings);
 }
 
+// What LoadOptions add to a loaded scene, in order: the sky, then the default light.
+Scene finishLighting(Scene scene, const LoadOptions& options) {
+    if (options.skyEnvironment) {
+        scene.skyEnvironment = readSkyEnvironment(*options.skyEnvironment, options.skyIntensity);
+    }
+    if (options.defaultLight && !sceneHasLight(scene)) {
+        addDefaultLight(scene);
+    }
+    return scene;
+}
+
+Scene loadWithoutOptions(const fs::path& file, const std::string& extension, const LoadOptions& options) {
+    if (extension == ".gltf" || extension == ".glb") {
+        if (options.instances) {
+            throw SceneError(file,
+                             "an instance count applies only to generated scenes with instances (city)");
+        }
+        return loadGltfFile(file);
+    }
+    if (extension != ".json") {
+        throw SceneError(file, "unknown kind of file '" + extension +
+                                   "' (scene files end in .json, glTF files in .gltf or .glb)");
+    }
+    const SceneFile sceneFile = parseSceneFile(file);
+    if (options.instances && sceneFile.generator != "city") {
+        throw SceneError(file, "an instance count applies only to generated scenes with instances (city)");
+    }
+    Scene scene;
+    if (!sceneFile.generator.empty()) {
+        scene = generate(sceneFile, options);
+        scene.generator = sceneFile.generator;
+    } else {
+        scene = loadGltfFile(sceneFile.gltf, {.metresPerUnit = sceneFile.metresPerUnit.value_or(1.0)});
+    }
+    scene.name = file.stem().string();
+    applySceneFile(sceneFile, scene);
+    finishCamera(scene);
+    return scene;
+}
+
 } // namespace
 
 fs::path resolveScene(std::string_view nameOrPath) {
@@ -60,21 +102,7 @@ fs::path resolveScene(std::string_view nameOrPath) {
 }
 
 Scene loadSceneFile(const fs::path& file, const LoadOptions& options) {
-    const SceneFile sceneFile = parseSceneFile(file);
-    if (options.instances && sceneFile.generator != "city") {
-        throw SceneError(file, "an instance count applies only to generated scenes with instances (city)");
-    }
-    Scene scene;
-    if (!sceneFile.generator.empty()) {
-        scene = generate(sceneFile, options);
-        scene.generator = sceneFile.generator;
-    } else {
-        scene = loadGltfFile(sceneFile.gltf, {.metresPerUnit = sceneFile.metresPerUnit.value_or(1.0)});
-    }
-    scene.name = file.stem().string();
-    applySceneFile(sceneFile, scene);
-    finishCamera(scene);
-    return scene;
+    return finishLighting(loadWithoutOptions(file, ".json", options), options);
 }
 
 Scene loadScene(std::string_view nameOrPath, const LoadOptions& options) {
@@ -83,18 +111,7 @@ Scene loadScene(std::string_view nameOrPath, const LoadOptions& options) {
     for (char& c : extension) {
         c = char(std::tolower(static_cast<unsigned char>(c)));
     }
-    if (extension == ".gltf" || extension == ".glb") {
-        if (options.instances) {
-            throw SceneError(file,
-                             "an instance count applies only to generated scenes with instances (city)");
-        }
-        return loadGltfFile(file);
-    }
-    if (extension != ".json") {
-        throw SceneError(file, "unknown kind of file '" + extension +
-                                   "' (scene files end in .json, glTF files in .gltf or .glb)");
-    }
-    return loadSceneFile(file, options);
+    return finishLighting(loadWithoutOptions(file, extension, options), options);
 }
 
 } // namespace lumina::scene

@@ -12,6 +12,8 @@ void ProbeRayShadingPass::record(FrameContext& frame, const ScreenProbeView& vie
         .read(1, r.hits)
         .read(2, view.voxelLighting)
         .read(3, r.nearField)
+        .read(4, r.rays)
+        .read(5, view.sky)
         .sampler(0, r.linearClamp)
         .write(0, r.rayRadiance)
         .dispatch(view.groupsX(), view.groupsY());

@@ -86,7 +86,6 @@ void ScreenProbeGather::uploadConstants(rhi::ICommandList& commands, const Scree
     c.grid = gpu::uint4(r.gridWidth, r.gridHeight, settings_.probeSpacing, r.probeCount);
     c.screen = gpu::uint4(r.width, r.height, uint32_t(frames_), flags);
     c.rays = gpu::uint4(r.raysPerProbe, brdfRays, r.raysPerProbe - brdfRays, 0u);
-    c.sky = gpu::float4(inputs.sky, 0.0f);
     c.voxelMin = gpu::float4(voxelMin, 0.0f);
     c.voxelMax = gpu::float4(voxelMax, 0.0f);
     c.trace = gpu::float4(range.maxDistance, std::tan(settings_.coneHalfAngle),
@@ -105,6 +104,9 @@ void ScreenProbeGather::record(FrameContext& frame, const ScreenProbeInputs& inp
                                     std::to_string(size.height) + ", the gather was made for " +
                                     std::to_string(resources_.width) + "x" +
                                     std::to_string(resources_.height));
+    }
+    if (!inputs.sky) {
+        throw std::invalid_argument("screen probes: no sky texture (a black sky is a 1x1 texture of zeros)");
     }
     checkVoxelLighting(inputs.voxelLighting);
     if (inputs.surfaceCache) {
@@ -131,6 +133,7 @@ void ScreenProbeGather::record(FrameContext& frame, const ScreenProbeInputs& inp
                                .sdf = inputs.sdf,
                                .voxelLighting = voxels,
                                .surfaceCache = inputs.surfaceCache ? &*inputs.surfaceCache : nullptr,
+                               .sky = inputs.sky,
                                .current = current_};
     placement_.record(frame, view);
     // A strategy that draws no rays needs no table (spMisWeight leaves it out).

@@ -8,7 +8,7 @@
 //
 //   ScreenProbeGather probes(device, width, height, settings);
 //   probes.record(frame, {.gbuffer = renderer.gbuffer(), .camera = camera, .sdf = sdfs,
-//                         .sky = scene.sky, .surfaceCache = gi::surfaceCacheView(cache)});
+//                         .sky = gpuScene.sky, .surfaceCache = gi::surfaceCacheView(cache)});
 //   probes.irradiance();   // RGBA16F: rgb irradiance per pixel (0 on sky)
 //
 // The GBuffer must hold the frame `camera` describes. The SceneSdf must have recorded its
@@ -53,7 +53,9 @@ struct ScreenProbeInputs {
     const GBuffer& gbuffer;
     const scene::Camera& camera;
     const sdf::SceneSdf& sdf;
-    glm::vec3 sky{0.0f}; // uniform radiance of rays that leave the scene
+    // What rays that leave the scene see: a latitude-longitude RGBA32F texture, usually the
+    // GpuScene's sky (gi/gpu_scene/sky_texture.h). Required.
+    rhi::TextureHandle sky;
     // Far-field hits read this volume; without one they read the surface cache's voxel lighting
     // (when given), else they are black.
     VoxelLighting voxelLighting;

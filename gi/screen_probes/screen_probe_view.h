@@ -16,6 +16,7 @@ struct ScreenProbeView {
     const sdf::SceneSdf& sdf;
     rhi::TextureHandle voxelLighting;               // never null (ScreenProbeResources::noVoxelLighting)
     const SurfaceCacheView* surfaceCache = nullptr; // null: none given (no near field)
+    rhi::TextureHandle sky;                         // what misses see (ScreenProbeInputs::sky)
     uint32_t current = 0;                           // index into the ping-pong pairs
 
     uint32_t previous() const { return current ^ 1u; }

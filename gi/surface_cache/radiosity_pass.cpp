@@ -3,6 +3,7 @@
 #include <glm/glm.hpp>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace lumina::surface_cache {
 namespace {
@@ -19,8 +20,8 @@ float radiosityOriginOffset(const RadiosityTraceSettings& settings, const sdf::S
 }
 
 RadiosityPass::RadiosityPass(rhi::IDevice& device, uint32_t atlasSize, const sdf::SceneSdf& sdf,
-                             const RadiosityTraceSettings& settings)
-    : sdf_(sdf), filterMinCosine_(settings.filterMinCosine) {
+                             rhi::TextureHandle sky, const RadiosityTraceSettings& settings)
+    : sdf_(sdf), sky_(std::move(sky)), filterMinCosine_(settings.filterMinCosine) {
     if (atlasSize == 0 || atlasSize % LUMINA_ATLAS_TILE_SIZE != 0) {
         throw std::invalid_argument("radiosity: atlas size " + std::to_string(atlasSize) +
                                     " is not a positive multiple of 64");
@@ -79,6 +80,7 @@ void RadiosityPass::record(gi::FrameContext& frame, const AtlasSurfaceBindings& 
     gi::ComputePass trace = frame.compute(kTracePassName, "surface_cache/radiosity.trace");
     sdf_.bindForTracing(bindSurfaces(trace))
         .read(11, voxels.volume())
+        .read(13, sky_)
         .write(0, traced_)
         .dispatchThreads(tiles.threadsX(probesPerTile), tiles.threadsY(probesPerTile), {64, 1});
 

@@ -3,7 +3,8 @@
 // cached surfaces per update, on the listed tiles. Probes every 4x4 texels trace 16 rays
 // through the global SDF, read the voxel lighting at their hits and project it to L1 SH; a
 // 4-neighbour filter averages probes on the same card and plane; each texel integrates its
-// probe's SH at its normal into the indirect layer (irradiance, negatives clamped).
+// probe's SH at its normal into the indirect layer (irradiance, negatives clamped). Rays that
+// leave the scene read the sky.
 #include "gi/core/frame_context.h"
 #include "gi/sdf/scene_sdf.h"
 #include "gi/surface_cache/atlas_tile_list.h"
@@ -27,7 +28,8 @@ public:
     static constexpr const char* kFilterPassName = "surface cache: radiosity filter";
     static constexpr const char* kIntegratePassName = "surface cache: radiosity integrate";
 
-    RadiosityPass(rhi::IDevice& device, uint32_t atlasSize, const sdf::SceneSdf& sdf,
+    // `sky` (the GpuScene's, gi/gpu_scene/sky_texture.h) is what rays leaving the scene see.
+    RadiosityPass(rhi::IDevice& device, uint32_t atlasSize, const sdf::SceneSdf& sdf, rhi::TextureHandle sky,
                   const RadiosityTraceSettings& settings = {});
 
     // Zeroes the probes; record once before the first update.
@@ -43,6 +45,7 @@ public:
 
 private:
     const sdf::SceneSdf& sdf_;
+    rhi::TextureHandle sky_;
     float originOffset_ = 0.0f;
     float maxDistance_ = 0.0f;
     float filterMinCosine_ = 0.9f;

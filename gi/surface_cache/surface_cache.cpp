@@ -59,7 +59,7 @@ SurfaceCache::SurfaceCache(rhi::IDevice& device, const scene::Scene& scene, cons
       directTiles_(device, settings.atlasSize, "surface cache direct-light tiles"),
       voxels_(device, gridOverCards(cards_, lighting.voxelResolution), sdf,
               radiosityOriginOffset(lighting.trace, sdf)),
-      radiosity_(device, settings.atlasSize, sdf, lighting.trace),
+      radiosity_(device, settings.atlasSize, sdf, gpuScene.sky, lighting.trace),
       schedule_(lighting.schedule, maxAlbedo(scene)), cardTiles_(tilesWithCards(cards_.atlas())),
       cardBvh_(buildCardBvh(cards_.cards())) {
     const size_t cardBytes = std::max<size_t>(cards_.cards().size(), 1) * sizeof(gpu::SurfaceCard);

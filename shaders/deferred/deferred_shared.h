@@ -36,10 +36,9 @@ LUMINA_GPU_NAMESPACE_BEGIN
 // Frame-wide constants (register b0 of every deferred kernel).
 struct DeferredFrameConstants {
     GpuCamera camera;
-    float4 sky;     // rgb: sky radiance, shown where no surface is; w: unused
-    uint4 counts;   // x: lights; y: width; z: height; w: unused
+    uint4 counts; // x: lights; y: width; z: height; w: unused
 };
-LUMINA_STATIC_ASSERT_SIZE(DeferredFrameConstants, 176);
+LUMINA_STATIC_ASSERT_SIZE(DeferredFrameConstants, 160);
 
 // The one constant buffer of both shadow kinds (register b1): the sun's orthographic
 // projection and the shadow-casting point and spot lights.

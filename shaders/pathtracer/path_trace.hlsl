@@ -29,6 +29,7 @@ StructuredBuffer<PtEmitter> gEmitters : register(t7);
 StructuredBuffer<PtAliasEntry> gEmitterAlias : register(t8);
 StructuredBuffer<GpuLight> gLights : register(t9);
 Texture2DArray<float4> gTextures : register(t10);
+Texture2D<float4> gSky : register(t11); // latitude-longitude radiance (common/sky_sampling.hlsli)
 SamplerState gMaterialSampler : register(s0);
 
 RWStructuredBuffer<float4> gMean : register(u0);  // rgb: radiance; w: luminance
@@ -42,6 +43,8 @@ RWStructuredBuffer<PtPixelAovs> gAovs : register(u3);
 #include "pathtracer/material.hlsli"
 #include "pathtracer/ray_offset.hlsli"
 #include "pathtracer/surface.hlsli"
+#define LUMINA_SKY_TEXTURE gSky
+#include "common/sky_sampling.hlsli"
 
 #define PT_GROUP_SIZE 8
 // Shadow rays towards a sampled emitter point stop this fraction short of it, so that they
@@ -182,7 +185,7 @@ void ptSampleEmitter(inout PathState path, inout PtRng rng, uint bounces, float3
         path.rays += 1u;
         BvhHit hit = bvhTraceClosest(origin, direction, 0.0f, LUMINA_LIGHT_INFINITE_DISTANCE);
         if (hit.primId == LUMINA_BVH_NO_HIT) {
-            ptAddLight(path, bounces, path.throughput * gConstants.sky.rgb);
+            ptAddLight(path, bounces, path.throughput * skyRadiance(direction));
             break;
         }
         PtSurface s = ptLoadSurface(hit.triangleIndex, hit.primId, hit.bary);

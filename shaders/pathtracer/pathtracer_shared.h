@@ -53,7 +53,6 @@ struct PtPixelAovs {
 // Constants of one render (constant buffer b0).
 struct PathTraceConstants {
     GpuCamera camera;
-    float4 sky;   // rgb: uniform sky radiance
     uint4 counts; // x: light count; y: emitter count; z: max bounces; w: flags (LUMINA_PT_FLAG_*)
     uint4 image;  // x: width; y: height; z: seed; w: Russian roulette starts after this many bounces
 };
@@ -78,7 +77,7 @@ LUMINA_STATIC_ASSERT_SIZE(PtTriangle, 16);
 LUMINA_STATIC_ASSERT_SIZE(PtEmitter, 64);
 LUMINA_STATIC_ASSERT_SIZE(PtAliasEntry, 16);
 LUMINA_STATIC_ASSERT_SIZE(PtPixelAovs, 64);
-LUMINA_STATIC_ASSERT_SIZE(PathTraceConstants, 192);
+LUMINA_STATIC_ASSERT_SIZE(PathTraceConstants, 176);
 LUMINA_STATIC_ASSERT_SIZE(PathTracePassConstants, 16);
 LUMINA_STATIC_ASSERT_SIZE(PtRayQueryConstants, 16);
 

@@ -1,7 +1,8 @@
 // lumina-kernel: cs main
 // Ray shading: each hit record to the radiance arriving along its ray. A near-field hit
 // (LUMINA_SP_FLAG_NEAR_FIELD) brings its radiance from the surface cache with it. A miss sees the
-// sky. A far-field hit reads the voxel lighting volume, in one of two conventions:
+// sky along its direction (common/sky_sampling.hlsli). A far-field hit reads the voxel lighting volume, in
+// one of two conventions:
 // - the caller's (RGBA16F over the world box voxelMin..voxelMax: rgb radiance leaving the surfaces
 //   in a voxel premultiplied by a, its occupancy): the trilinear sample divided by its alpha, so
 //   empty neighbour voxels do not darken a surface;
@@ -17,11 +18,15 @@ StructuredBuffer<ScreenProbe> gProbes : register(t0);
 StructuredBuffer<SdfHit> gHits : register(t1);
 Texture3D<float4> gVoxelLighting : register(t2);
 StructuredBuffer<float4> gNearField : register(t3); // a: LUMINA_SP_NEAR_*, with LUMINA_SP_FLAG_NEAR_FIELD
+StructuredBuffer<ProbeRay> gRays : register(t4);
+Texture2D<float4> gSky : register(t5);
 SamplerState gLinearClamp : register(s0);
 RWStructuredBuffer<float4> gRayRadiance : register(u0); // rgb: radiance; a: 1 hit, 0 miss
 
 #define LUMINA_VOXEL_LIGHTING gVoxelLighting
 #include "surface_cache/voxel_lighting_sampling.hlsli"
+#define LUMINA_SKY_TEXTURE gSky
+#include "common/sky_sampling.hlsli"
 
 // A cone stops once the global SDF falls below its radius r = t tan(angle), so its hit lies in
 // front of the surface by about r, and by the global SDF's shell around open surfaces (half a
@@ -86,7 +91,7 @@ float3 voxelRadiance(SdfHit hit) {
         }
         const SdfHit hit = gHits[ray];
         const bool miss = sdfIsMiss(hit);
-        const float3 radiance = miss ? gSp.sky.rgb : voxelRadiance(hit);
+        const float3 radiance = miss ? skyRadiance(gRays[ray].directionAndWeight.xyz) : voxelRadiance(hit);
         gRayRadiance[ray] = float4(radiance, miss ? 0.0 : 1.0);
     }
 }

@@ -73,7 +73,6 @@ struct ScreenProbeConstants {
     uint4 grid;               // x, y: probes across and down; z: spacing in pixels; w: probe count
     uint4 screen;             // x, y: image size; z: frame index (ray jitter); w: LUMINA_SP_FLAG_*
     uint4 rays;               // x: rays per probe; y: BRDF rays; z: lighting rays; w: 0
-    float4 sky;               // rgb: sky radiance, what a ray that leaves the scene sees
     float4 voxelMin;          // xyz: world corner of the voxel lighting volume
     float4 voxelMax;          // xyz: far corner
     float4 trace;             // x: max distance (world); y: tan of the cone half angle; z: origin bias
@@ -89,7 +88,7 @@ struct ScreenProbeConstants {
 
 LUMINA_STATIC_ASSERT_SIZE(ScreenProbe, 48);
 LUMINA_STATIC_ASSERT_SIZE(ProbeRay, 32);
-LUMINA_STATIC_ASSERT_SIZE(ScreenProbeConstants, 464);
+LUMINA_STATIC_ASSERT_SIZE(ScreenProbeConstants, 448);
 
 LUMINA_GPU_NAMESPACE_END
 

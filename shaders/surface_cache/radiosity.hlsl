@@ -5,7 +5,8 @@
 // the cached surfaces per update.
 //   trace:     one thread per probe (every 4x4 texels) of the listed tiles: 16 rays over the
 //              hemisphere through the global SDF, each hit reading the voxel lighting (the
-//              last update's outgoing radiance), projected to L1 SH.
+//              last update's outgoing radiance), each ray that leaves the scene the sky
+//              (common/sky_sampling.hlsli), projected to L1 SH.
 //   filter:    each probe averaged with its 4 neighbours on the same card and plane.
 //   integrate: one thread per texel: the filtered SH's irradiance at the texel's normal into
 //              the indirect layer, negatives clamped.
@@ -26,6 +27,7 @@ Texture2D<float> gCaptureDepth : register(t9);
 StructuredBuffer<uint> gTiles : register(t10);
 Texture3D<float4> gVoxelLighting : register(t11);
 StructuredBuffer<RadiosityProbe> gProbesIn : register(t12); // filter: traced; integrate: filtered
+Texture2D<float4> gSky : register(t13);                     // trace: latitude-longitude radiance
 RWStructuredBuffer<RadiosityProbe> gProbesOut : register(u0);
 LUMINA_UAV_FORMAT(rgba16f) RWTexture2D<float4> gIndirect : register(u1);
 
@@ -35,6 +37,8 @@ LUMINA_UAV_FORMAT(rgba16f) RWTexture2D<float4> gIndirect : register(u1);
 #include "surface_cache/surface_cache_texel.hlsli"
 #define LUMINA_VOXEL_LIGHTING gVoxelLighting
 #include "surface_cache/voxel_lighting_sampling.hlsli"
+#define LUMINA_SKY_TEXTURE gSky
+#include "common/sky_sampling.hlsli"
 
 // Sphere-tracing steps per probe ray: the library's 64 run out on rays grazing a wall or
 // entering a corner (steps shrink with the distance), and in a closed room a ray that runs out
@@ -145,8 +149,15 @@ float3 finiteOrZero(float3 v) {
         float sinTheta = sqrt(max(1.0f - cosTheta * cosTheta, 0.0f));
         float3 dir = normalize(sinTheta * cos(phi) * t1 + sinTheta * sin(phi) * t2 + cosTheta * n);
         SdfHit hit = sdfTraceGlobal(origin, dir, 0.0f, params);
-        float3 radiance = float3(0.0f, 0.0f, 0.0f); // a miss sees nothing: these scenes have no sky
-        if (!sdfIsMiss(hit)) {
+        // A ray that leaves the scene sees the sky. One that ran out of steps (grazing a wall, deep
+        // in a corner) is a miss too, but it is still inside: it sees nothing rather than a sky
+        // that a closed room would not show it.
+        float3 radiance = float3(0.0f, 0.0f, 0.0f);
+        if (sdfIsMiss(hit)) {
+            if (hit.ids.w < params.maxSteps) {
+                radiance = skyRadiance(dir);
+            }
+        } else {
             float3 hitNormal = hit.normalAndCoverage.xyz;
             hitNormal = dot(hitNormal, hitNormal) > 0.0f ? hitNormal : -dir;
             radiance = finiteOrZero(sampleVoxelLighting(gConstants.grid, hit.positionAndT.xyz, hitNormal));

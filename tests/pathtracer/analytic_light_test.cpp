@@ -6,6 +6,7 @@
 // centres are sampled (no jitter), so each pixel's value is exact up to rounding.
 #include "gi/core/camera.h"
 #include "tests/pathtracer/path_tracer_fixture.h"
+#include "tests/scene/sky_test_scenes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,7 +20,7 @@ namespace {
 using AnalyticLightTest = PathTracerTest;
 
 constexpr uint32_t kSize = 32;
-constexpr float kHalfSide = 1.0f; // the plane spans [-1, 1] in x and z at y = 0
+constexpr float kHalfSide = 1.0f; // the plane spans [-1, 1] in x and z at y = 0 (makeFloorScene)
 const glm::vec3 kAlbedo(0.8f, 0.5f, 0.2f);
 // Pixels whose centre ray lands this close to the plane's edge are skipped (rounding).
 constexpr float kEdgeMargin = 1e-3f;
@@ -28,35 +29,9 @@ constexpr float kAbsoluteTolerance = 1e-6f;
 
 // The plane (front face +y), camera 2.5 units above looking down, black sky.
 scene::Scene makePlaneScene(const glm::mat4& transform = glm::mat4(1.0f)) {
-    scene::Scene scene;
+    scene::Scene scene = makeFloorScene(kSize, kAlbedo);
     scene.name = "analytic plane";
-    scene::Mesh mesh;
-    mesh.name = "plane";
-    // Counter-clockwise seen from +y: cross(v1 - v0, v2 - v0) points up.
-    mesh.positions = {{-kHalfSide, 0, -kHalfSide},
-                      {-kHalfSide, 0, kHalfSide},
-                      {kHalfSide, 0, kHalfSide},
-                      {kHalfSide, 0, -kHalfSide}};
-    mesh.normals.assign(4, glm::vec3(0, 1, 0));
-    mesh.uvs = {{0, 0}, {0, 1}, {1, 1}, {1, 0}};
-    mesh.indices = {0, 1, 2, 0, 2, 3};
-    mesh.submeshes = {{0, 6, 0}};
-    for (const glm::vec3& p : mesh.positions) {
-        mesh.bounds.extend(p);
-    }
-    scene.meshes.push_back(mesh);
-    scene.instances.push_back({0, transform, "plane"});
-    scene::Material material;
-    material.name = "grey";
-    material.baseColor = glm::vec4(kAlbedo, 1.0f);
-    scene.materials.push_back(material);
-    scene.camera.position = {0.0f, 2.5f, 0.0f};
-    scene.camera.forward = {0.0f, -1.0f, 0.0f};
-    scene.camera.up = {0.0f, 0.0f, -1.0f};
-    scene.camera.fovY = glm::radians(60.0f);
-    scene.camera.nearPlane = 0.1f;
-    scene.camera.farPlane = 10.0f;
-    scene.image = {kSize, kSize};
+    scene.instances[0].transform = transform;
     return scene;
 }
 

@@ -223,6 +223,7 @@ TEST_P(ProbeNearFieldGpuTest, WithoutCacheOrDistanceTheNearFieldIsSkippedAndNoth
             zero.probes().record(frame, {.gbuffer = zero.renderer().gbuffer(),
                                          .camera = camera,
                                          .sdf = zero.sdf(),
+                                         .sky = zero.sceneSky(),
                                          .voxelLighting = {},
                                          .surfaceCache = bad});
             ADD_FAILURE() << what << " accepted";

@@ -8,6 +8,7 @@
 #include "gi/deferred/buffer_readback.h"
 #include "gi/deferred/deferred_renderer.h"
 #include "gi/gpu_scene/gpu_scene.h"
+#include "gi/gpu_scene/sky_texture.h"
 #include "gi/scene/scene.h"
 #include "gi/scene/scene_loader.h"
 #include "gi/screen_probes/screen_probe_gather.h"
@@ -104,6 +105,8 @@ public:
         rhi::writeTexture(device_, *voxels_, {}, texels.data());
     }
 
+    // A uniform sky for the probes alone, written before each frame (any value, NaN included);
+    // without one the probes see the scene's sky (the GpuScene's texture, as the renderer does).
     void setSky(glm::vec3 sky) { sky_ = sky; }
     void setCamera(const scene::Camera& camera) {
         camera_ = camera;
@@ -142,10 +145,16 @@ public:
                           lo + glm::vec3(grid.dims) * grid.minAndVoxelSize.w};
             }
         }
+        rhi::TextureHandle sky = gpuScene_.sky;
+        if (sky_) {
+            const glm::vec4 texel(*sky_, 1.0f);
+            list_->writeTexture(*skyOverride_, {}, &texel);
+            sky = skyOverride_;
+        }
         probes_.record(frame, {.gbuffer = renderer_.gbuffer(),
                                .camera = camera_,
                                .sdf = sdf_,
-                               .sky = sky_,
+                               .sky = sky,
                                .voxelLighting = voxels,
                                .surfaceCache = cache});
         list_->end();
@@ -194,6 +203,7 @@ public:
     gi::DeferredRenderer& renderer() { return renderer_; }
     const scene::Scene& scene() const { return scene_; }
     const sdf::SceneSdf& sdf() const { return sdf_; }
+    const rhi::TextureHandle& sceneSky() const { return gpuScene_.sky; }
     const surface_cache::SurfaceCache& cache() const { return *cache_; }
 
 private:
@@ -210,7 +220,8 @@ private:
     uint32_t voxelDims_;
     rhi::TextureHandle voxels_;
     glm::vec3 voxelMin_{0.0f}, voxelMax_{0.0f};
-    glm::vec3 sky_{0.0f};
+    std::optional<glm::vec3> sky_;
+    rhi::TextureHandle skyOverride_ = gi::createSkyTexture(device_, gi::packUniformSky(glm::vec3(0.0f)));
     bool useVoxels_ = true;
     std::unique_ptr<surface_cache::SurfaceCache> cache_;
     bool giveCache_ = true;
