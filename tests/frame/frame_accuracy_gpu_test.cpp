@@ -168,12 +168,14 @@ std::string referenceName(const ::testing::TestParamInfo<std::tuple<rhi::Api, Re
 //   cornell_box_point  0.056 / 0.081, +4.3%
 //   cornell_box        0.128 / 0.229, +19% (at 128x128, medium, the mean is within 2%)
 //   open_top_box       0.135 / 0.403, +2.4%
+// Since the one preset table (gi/frame/preset.h) the tests take the low preset's 1024^2 sun shadow
+// map (it was 2048^2 here): open_top_box 0.155 / 0.425, +1.1% (the direct-only image moved with it).
 // The goal, a tenth of direct-only's relMSE, is tested at 128x128 against 65,536-spp references
 // (frame_reference_accuracy_gpu_test.cpp).
 const ReferenceCase kReferenceCases[] = {
     {.scene = "cornell_box_point", .relMseBound = 0.075, .meanTolerance = 0.1},
     {.scene = "cornell_box", .relMseBound = 0.15, .meanTolerance = 0.3},
-    {.scene = "open_top_box", .relMseBound = 0.15, .meanTolerance = 0.3},
+    {.scene = "open_top_box", .relMseBound = 0.17, .meanTolerance = 0.3},
 };
 
 INSTANTIATE_TEST_SUITE_P(Scenes, FrameVsPathTracerGpu,
