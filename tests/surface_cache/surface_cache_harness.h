@@ -39,12 +39,14 @@ public:
     // returns its lights, then one cache update), submits it and waits; returns the passes it
     // skipped and adds its timers to `timings`.
     using LightsFrame = std::function<std::optional<gi::ShadowedLights>(gi::FrameContext&)>;
-    std::vector<gi::SkippedPass> update(const LightsFrame& lights = {}) {
+    // With a `viewer`, the cards' levels of detail follow it (SurfaceCache::update).
+    std::vector<gi::SkippedPass> update(const LightsFrame& lights = {},
+                                        const std::optional<glm::vec3>& viewer = std::nullopt) {
         rhi::CommandListHandle list = device_.createCommandList();
         list->begin();
         gi::FrameContext frame(pipelines, *list, frameIndex_++);
         sdf.record(frame);
-        cache.update(frame, lights ? lights(frame) : std::nullopt);
+        cache.update(frame, lights ? lights(frame) : std::nullopt, viewer);
         list->end();
         rhi::IQueue& queue = device_.queue(list->queueType());
         queue.waitForValue(queue.submit(*list));

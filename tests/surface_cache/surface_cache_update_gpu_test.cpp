@@ -5,6 +5,7 @@
 #include "tests/rhi/gpu_test_fixture.h"
 #include "tests/surface_cache/surface_cache_harness.h"
 
+#include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace lumina::test {
@@ -97,6 +98,59 @@ TEST(SurfaceCacheVoxelGrid, CoversTheBoundsWithAVoxelOfMargin) {
     EXPECT_THROW(voxelGridOver({0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 0.0f}, 64), std::invalid_argument);
     EXPECT_THROW(voxelGridOver({0.0f, 0.0f, 0.0f}, {1.0f, 1.0f, 1.0f}, 3), std::invalid_argument);
     EXPECT_THROW(voxelGridOver({0.0f, 0.0f, 0.0f}, {1.0f, NAN, 1.0f}, 64), std::invalid_argument);
+}
+
+// A viewer walking across a city block whose cards do not fit the atlas at full density: the
+// levels follow it on the GPU path (card buffer, tile-to-card lookup and tile lists re-uploaded,
+// reallocated cards captured within the budget), every frame validation-clean, the atlas never
+// over-full, the cards near the end of the walk finer than at its start, and once the captures
+// catch up every lit texel finite.
+TEST_P(SurfaceCacheUpdateGpu, AMovingViewerReallocatesCardsWithinTheBudgets) {
+    LUMINA_REQUIRE_KERNELS();
+    SurfaceCacheSettings settings;
+    settings.atlasSize = 16 * kTileSize; // 256 tiles for ~350 cards of up to 8 x 8 tiles
+    settings.texelsPerUnit = 4.0f;
+    settings.lodChangesPerFrame = 16;
+    settings.capturesPerFrame = 16;
+    SurfaceCacheHarness h(device(), shaders(), scene::loadScene("city", {.instances = 16}), settings);
+    const scene::Bounds bounds = h.scene.worldBounds();
+    const glm::vec3 start(bounds.min.x, 2.0f, bounds.min.z);
+    const glm::vec3 end(bounds.max.x, 2.0f, bounds.max.z);
+    const SurfaceCards& cards = h.cache.cards();
+    // The card nearest the end of the walk.
+    uint32_t nearEnd = 0;
+    for (uint32_t c = 1; c < cards.cards().size(); ++c) {
+        if (cardPriority(cardBounds(cards.cards()[c]), end) >
+            cardPriority(cardBounds(cards.cards()[nearEnd]), end)) {
+            nearEnd = c;
+        }
+    }
+    h.update({}, start);
+    const uint8_t levelAtStart = cards.level(nearEnd);
+    SCOPED_TRACE(toString(cards.occupancy()));
+    ASSERT_LT(cards.occupancy().cardsAtLevel[0], cards.cards().size()) << "the atlas must overflow";
+
+    uint32_t changed = 0;
+    constexpr int kSteps = 12;
+    for (int step = 1; step <= kSteps; ++step) {
+        h.update({}, glm::mix(start, end, float(step) / kSteps));
+        const CardLodUpdate& last = h.cache.lodHistory().last;
+        EXPECT_LE(last.changed(), settings.lodChangesPerFrame) << "step " << step;
+        changed += last.changed();
+        const AtlasOccupancy o = cards.occupancy();
+        ASSERT_LE(o.usedTiles, o.totalTiles);
+    }
+    EXPECT_GT(changed, 0u);
+    for (int frame = 0;
+         frame < 100 && (h.cache.lodHistory().pendingCaptures > 0 || h.cache.lodHistory().last.pending > 0);
+         ++frame) {
+        h.update({}, end);
+    }
+    EXPECT_EQ(h.cache.lodHistory().pendingCaptures, 0u);
+    EXPECT_LT(cards.level(nearEnd), levelAtStart) << cards.describe(nearEnd);
+    for (const glm::vec4& texel : h.cache.readLayer(AtlasLayer::FinalLighting)) {
+        ASSERT_TRUE(std::isfinite(texel.r) && std::isfinite(texel.g) && std::isfinite(texel.b));
+    }
 }
 
 TEST_P(SurfaceCacheUpdateGpu, ATileListRefusesTilesOutsideTheAtlas) {
