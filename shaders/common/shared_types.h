@@ -11,7 +11,7 @@
 //                                       ISO mode (-std=c++20) already keeps a*b-c*d uncontracted
 //   LUMINA_STATIC_ASSERT_SIZE(T, n)     checks sizeof(T) == n and 16-byte alignment in C++ only
 //
-// Rules for shared structs (DESIGN.md, "Buffer layout"): float4/uint4 members only (16-byte
+// Rules for shared structs (docs/architecture.md, "Shared structs"): float4/uint4 members only (16-byte
 // aligned, identical under std430 and D3D structured-buffer packing), uint instead of bool,
 // no matrices. Shared functions avoid swizzles (glm has none without GLM_FORCE_SWIZZLE) and
 // use only the intrinsics mirrored here.

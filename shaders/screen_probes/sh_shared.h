@@ -8,7 +8,7 @@
 // Irradiance Environment Maps", 2001): E(n) = sum_lm A_l L_lm Y_lm(n), with the clamped cosine's
 // zonal factors A_0 = pi, A_1 = 2 pi / 3, A_2 = pi / 4. Truncating at L2 rings: a cosine lobe of
 // radiance gives slightly negative irradiance on its far side, which shIrradiance clamps to 0
-// (DESIGN.md: SH reconstruction clamps negatives).
+// (docs/architecture.md, "Numerical hygiene": SH reconstruction clamps negatives).
 #include "../common/shared_types.h"
 
 LUMINA_GPU_NAMESPACE_BEGIN

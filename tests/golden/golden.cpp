@@ -12,7 +12,7 @@ namespace lumina::test {
 
 namespace {
 
-// Debian 12's lavapipe, the one driver goldens are made on (DESIGN.md, "Tests").
+// Debian 12's lavapipe, the one driver goldens are made on (docs/architecture.md, "Tests").
 constexpr std::string_view kGoldenAdapter = "llvmpipe";
 constexpr std::string_view kGoldenDriver = "Mesa 22.3.6";
 
