@@ -112,8 +112,11 @@ bool SurfaceCache::recordDirectLight(gi::FrameContext& frame, const std::optiona
 
 void SurfaceCache::updateLod(const glm::vec3& viewer) {
     const CardLodUpdate lod = cards_.updateLod(viewer);
-    // With changes pending (budget, or no room yet), plan again next frame even if still.
-    lodViewer_ = lod.pending > 0 ? std::nullopt : std::optional<glm::vec3>(viewer);
+    // With changes left and progress made (the budget ran out), plan again next frame even if the
+    // viewer stands still; changes that found no room wait for the viewer to move, so a still
+    // camera costs no planning.
+    const bool again = lod.pending > 0 && lod.changed() > 0;
+    lodViewer_ = again ? std::nullopt : std::optional<glm::vec3>(viewer);
     lodHistory_.last = lod;
     ++lodHistory_.updates;
     lodHistory_.evictions += lod.evicted;
