@@ -127,7 +127,7 @@ void Viewer::buildRenderer() {
     const uint64_t before = allocated(device_);
     renderer_ = std::make_unique<gi::FrameRenderer>(device_, scene_, *gpuScene_, std::move(settings));
     memory_.renderer = allocated(device_) - before;
-    memory_.surfaceCacheAtlas = renderer_->lumen() ? renderer_->lumen()->surfaceCache().atlas().bytes() : 0;
+    memory_.lumen = renderer_->lumen() ? renderer_->lumen()->memory() : gi::LumenMemory{};
     renderer_->setCamera(camera_.camera());
     const std::string current = state_.view < state_.views.size() ? state_.views[state_.view].name : "";
     state_.views = listBufferViews(*renderer_, sceneDiagonal_);

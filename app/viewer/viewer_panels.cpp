@@ -162,9 +162,12 @@ void Viewer::buildUi(const rhi::TextureHandle& image) {
         // Sampled from the device's allocation counter around each construction.
         ImGui::Text("scene (geometry, materials, textures)  %s", megabytes(memory_.scene).c_str());
         ImGui::Text("renderer (GBuffer, shadows, GI)        %s", megabytes(memory_.renderer).c_str());
-        if (memory_.surfaceCacheAtlas != 0) {
-            ImGui::Text("  of which surface-cache atlas         %s",
-                        megabytes(memory_.surfaceCacheAtlas).c_str());
+        if (memory_.lumen.surfaceCache != 0) {
+            ImGui::Text("  of which SDFs                        %s", megabytes(memory_.lumen.sdf).c_str());
+            ImGui::Text("  of which surface cache               %s",
+                        megabytes(memory_.lumen.surfaceCache).c_str());
+            ImGui::Text("  of which screen probes               %s",
+                        megabytes(memory_.lumen.screenProbes).c_str());
         }
         ImGui::Text("viewer (UI, swapchain copy)            %s", megabytes(memory_.viewer).c_str());
         ImGui::Text("device total now                       %s",

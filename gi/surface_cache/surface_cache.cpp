@@ -165,7 +165,7 @@ void SurfaceCache::update(gi::FrameContext& frame, const std::optional<gi::Shado
         }
         schedule_.markDirty(dirtyTiles);
     }
-    lodHistory_.pendingCaptures = uint32_t(cards_.dirtyCards().size());
+    lodHistory_.pendingCaptures = cards_.dirtyCardCount();
 
     const bool directChanged = recordDirectLight(frame, lights, dirtyTiles);
 

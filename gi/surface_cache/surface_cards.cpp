@@ -370,6 +370,14 @@ void SurfaceCards::markCaptured(uint32_t card, uint32_t frame) {
     cards_[card].info.w = frame;
 }
 
+uint32_t SurfaceCards::dirtyCardCount() const {
+    uint32_t count = 0;
+    for (uint32_t i = 0; i < cards_.size(); ++i) {
+        count += (flagsOf(cards_[i]) & LUMINA_CARD_DIRTY) && cardTiles_[i].area() != 0 ? 1u : 0u;
+    }
+    return count;
+}
+
 std::vector<uint32_t> SurfaceCards::dirtyCards(uint32_t limit) const {
     std::vector<uint32_t> dirty;
     for (uint32_t i = 0; i < cards_.size(); ++i) {

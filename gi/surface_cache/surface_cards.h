@@ -89,6 +89,8 @@ public:
     void markCaptured(uint32_t card, uint32_t frame);
     // Dirty cards that hold texels, most useful first; at most `limit`.
     std::vector<uint32_t> dirtyCards(uint32_t limit = UINT32_MAX) const;
+    // How many dirtyCards() would return without a limit.
+    uint32_t dirtyCardCount() const;
 
     // "card 3 (instance 'floor', mesh 'floor', +Y)", for error messages.
     std::string describe(uint32_t card) const;
