@@ -62,6 +62,7 @@ void DeferredRenderer::setLights(std::vector<scene::Light> lights) {
     }
     lightsDirty_ = true;
     ++lightsVersion_;
+    shadowFrames_.assign(sceneLights_.size(), 0);
 }
 
 ShadowedLights DeferredRenderer::shadowedLights() const {
@@ -71,12 +72,13 @@ ShadowedLights DeferredRenderer::shadowedLights() const {
             .sunShadowMap = sunShadow_.map(),
             .pointShadowMaps = pointShadow_.maps(),
             .lightsVersion = lightsVersion_,
-            .geometryVersion = geometryVersion_};
+            .shadowFrames = shadowFrames_};
 }
 
-void DeferredRenderer::geometryChanged(const scene::Bounds& bounds) {
-    bounds_ = bounds;
-    ++geometryVersion_;
+void DeferredRenderer::geometryMoved(const scene::Bounds& sceneBounds,
+                                     std::vector<scene::Bounds> movedRegions) {
+    bounds_ = sceneBounds;
+    movedRegions_.insert(movedRegions_.end(), movedRegions.begin(), movedRegions.end());
 }
 
 rhi::TextureHandle DeferredRenderer::sunShadowMap() const {
@@ -142,8 +144,20 @@ void DeferredRenderer::recordLighting(FrameContext& frame) {
     uploadConstants(frame.commands(), sun, cubes);
 
     gbufferPass_.record(frame, gbuffer_, frameConstants_);
-    sunShadow_.record(frame, sun, shadowConstants_, geometryVersion_);
-    pointShadow_.record(frame, cubes, shadowConstants_, geometryVersion_);
+    // The frame a map was rendered stands for its content: the surface cache re-lights the cards
+    // a light reaches when it changes.
+    const uint64_t frameMark = frame.frameIndex() + 1;
+    if (sunShadow_.record(frame, sun, shadowConstants_, !movedRegions_.empty())) {
+        shadowFrames_.at(*lights_.sun) = frameMark;
+    }
+    const std::vector<bool> cubesRendered =
+        pointShadow_.record(frame, cubes, shadowConstants_, movedRegions_);
+    for (size_t cube = 0; cube < cubesRendered.size(); ++cube) {
+        if (cubesRendered[cube]) {
+            shadowFrames_.at(lights_.cubeLights[cube]) = frameMark;
+        }
+    }
+    movedRegions_.clear();
     directLight_.record(frame,
                         {.gbuffer = gbuffer_,
                          .frameConstants = frameConstants_,

@@ -45,7 +45,9 @@ struct ShadowedLights {
     rhi::TextureHandle sunShadowMap;    // D32
     rhi::TextureHandle pointShadowMaps; // R32F cube array
     uint64_t lightsVersion = 0;         // changes whenever setLights is called
-    uint64_t geometryVersion = 0;       // changes whenever geometryChanged is called
+    // Per light (scene order): the frame its shadow map was last rendered, 0 for a light without
+    // one. A change means what the light reaches may have changed (geometry moved in its range).
+    std::vector<uint64_t> shadowFrames;
 };
 
 class DeferredRenderer {
@@ -71,8 +73,12 @@ public:
         indirect_ = std::move(indirect);
         indirectScale_ = scale;
     }
-    // Geometry moved (within `bounds`): shadow maps re-render on the next frame.
-    void geometryChanged(const scene::Bounds& bounds);
+    // Instances moved: `movedRegions` holds their old and new world boxes, `sceneBounds` the
+    // scene's bounds now. The next frame re-renders the sun's map and every cube map whose range
+    // reaches a region; the others keep theirs.
+    void geometryMoved(const scene::Bounds& sceneBounds, std::vector<scene::Bounds> movedRegions);
+    // Everything within `bounds` may have moved.
+    void geometryChanged(const scene::Bounds& bounds) { geometryMoved(bounds, {bounds}); }
 
     uint32_t width() const { return settings_.width; }
     uint32_t height() const { return settings_.height; }
@@ -85,6 +91,8 @@ public:
     rhi::TextureHandle pointShadowMaps() const;
     uint32_t pointShadowCubes() const { return pointShadow_.cubeCount(); }
     const LightSetup& lights() const { return lights_; }
+    const std::vector<scene::Light>& sceneLights() const { return sceneLights_; }
+    uint64_t lightsVersion() const { return lightsVersion_; }
     // Valid once render() has recorded a frame.
     ShadowedLights shadowedLights() const;
 
@@ -101,8 +109,9 @@ private:
     bool lightsDirty_ = true;
     uint64_t lightsVersion_ = 0;
     scene::Bounds bounds_;
-    uint64_t geometryVersion_ = 0;
-    rhi::TextureHandle sky_; // the GpuScene's
+    std::vector<scene::Bounds> movedRegions_; // since the last recorded frame
+    std::vector<uint64_t> shadowFrames_;      // per light, ShadowedLights::shadowFrames
+    rhi::TextureHandle sky_;                  // the GpuScene's
     rhi::TextureHandle indirect_;
     float indirectScale_ = 1.0f;
 

@@ -2,6 +2,10 @@
 
 #include "shaders/deferred/deferred_shared.h"
 
+#include <algorithm>
+#include <limits>
+#include <string>
+
 namespace lumina::gi {
 
 namespace {
@@ -26,9 +30,9 @@ PointShadowPass::PointShadowPass(rhi::IDevice& device, const GpuScene& gpuScene,
     : device_(device), gpuScene_(gpuScene), faceSize_(faceSize), draws_(shadowDraws(gpuScene.draws())),
       placeholder_(createDistanceCubes(device, 1, 1, "point shadow maps (none)")) {}
 
-void PointShadowPass::allocate(uint32_t cubes) {
+bool PointShadowPass::allocate(uint32_t cubes) {
     if (cubes <= allocatedCubes_) {
-        return;
+        return false;
     }
     distance_ = createDistanceCubes(device_, faceSize_, cubes, "point shadow maps");
     depth_ = device_.createTexture({.dimension = rhi::TextureDimension::Texture2DArray,
@@ -39,33 +43,29 @@ void PointShadowPass::allocate(uint32_t cubes) {
                                     .usage = rhi::TextureUsage::DepthStencil,
                                     .debugName = "point shadow depth"});
     allocatedCubes_ = cubes;
+    return true;
 }
 
-void PointShadowPass::record(FrameContext& frame, const std::vector<glm::vec4>& cubes,
-                             const rhi::BufferHandle& shadowConstants, uint64_t geometryVersion) {
-    rhi::ICommandList& commands = frame.commands();
-    if (!placeholderCleared_) {
-        commands.clearColor(*placeholder_, kFarDistance);
-        placeholderCleared_ = true;
-    }
-    if (cubes.empty()) {
-        cubeCount_ = 0;
-        frame.skip("point shadows", "no point or spot lights");
-        return;
-    }
-    if (cubeCount_ == cubes.size() && cubes == renderedCubes_ && geometryVersion == renderedGeometry_) {
-        frame.skip("point shadows", "unchanged since frame " + std::to_string(renderedFrame_));
-        return;
-    }
-    allocate(static_cast<uint32_t>(cubes.size()));
-    commands.clearColor(*distance_, kFarDistance);
-    commands.clearDepth(*depth_, 1.0f);
-    RasterPipelineState state;
-    state.raster.cullMode = rhi::CullMode::None; // both faces cast
-    state.depth = {.testEnable = true, .writeEnable = true, .compareOp = rhi::CompareOp::Less};
-    for (uint32_t layer = 0; layer < cubes.size() * LUMINA_CUBE_FACE_COUNT; ++layer) {
+void PointShadowPass::renderCube(FrameContext& frame, uint32_t cube,
+                                 const rhi::BufferHandle& shadowConstants) {
+    RasterPipelineState clear;
+    clear.raster.cullMode = rhi::CullMode::None;
+    clear.depth = {.testEnable = true, .writeEnable = true, .compareOp = rhi::CompareOp::Always};
+    RasterPipelineState casters;
+    casters.raster.cullMode = rhi::CullMode::None; // both faces cast
+    casters.depth = {.testEnable = true, .writeEnable = true, .compareOp = rhi::CompareOp::Less};
+    const std::vector<RasterDraw> cover{RasterDraw{.args = {.vertexOrIndexCount = 3}}};
+    for (uint32_t face = 0; face < LUMINA_CUBE_FACE_COUNT; ++face) {
+        const uint32_t layer = cube * LUMINA_CUBE_FACE_COUNT + face;
+        frame
+            .raster("point shadows", "deferred/shadow_layer_clear.vsMain",
+                    "deferred/shadow_layer_clear.psMain")
+            .state(clear)
+            .colorTarget(distance_, layer)
+            .depthTarget(depth_, layer)
+            .draw(cover, false);
         frame.raster("point shadows", "deferred/point_shadow.vsMain", "deferred/point_shadow.psMain")
-            .state(state)
+            .state(casters)
             .constantBuffer(1, shadowConstants)
             .read(0, gpuScene_.vertices)
             .read(1, gpuScene_.instances)
@@ -74,10 +74,55 @@ void PointShadowPass::record(FrameContext& frame, const std::vector<glm::vec4>& 
             .indexBuffer(gpuScene_.indices)
             .draw(shadowRasterDraws(draws_, layer), true);
     }
+}
+
+std::vector<bool> PointShadowPass::record(FrameContext& frame, const std::vector<glm::vec4>& cubes,
+                                          const rhi::BufferHandle& shadowConstants,
+                                          std::span<const scene::Bounds> movedRegions) {
+    rhi::ICommandList& commands = frame.commands();
+    if (!placeholderCleared_) {
+        commands.clearColor(*placeholder_, kFarDistance);
+        placeholderCleared_ = true;
+    }
+    std::vector<bool> rendered(cubes.size(), false);
     cubeCount_ = static_cast<uint32_t>(cubes.size());
-    renderedCubes_ = cubes;
-    renderedGeometry_ = geometryVersion;
-    renderedFrame_ = frame.frameIndex();
+    if (cubes.empty()) {
+        frame.skip("point shadows", "no point or spot lights");
+        return rendered;
+    }
+    const bool fresh = allocate(cubeCount_);
+    renderedCubes_.resize(cubes.size(), glm::vec4(std::numeric_limits<float>::quiet_NaN()));
+    renderedFrames_.resize(cubes.size(), 0);
+    std::vector<std::string> kept;
+    for (uint32_t cube = 0; cube < cubes.size(); ++cube) {
+        const glm::vec4& sphere = cubes[cube];
+        // A moved box within the range sphere can change what this cube sees.
+        const bool geometryInRange =
+            std::any_of(movedRegions.begin(), movedRegions.end(), [&](const scene::Bounds& box) {
+                const glm::vec3 nearest = glm::clamp(glm::vec3(sphere), box.min, box.max);
+                return !box.empty() && glm::distance(nearest, glm::vec3(sphere)) <= sphere.w;
+            });
+        if (!fresh && sphere == renderedCubes_[cube] && !geometryInRange) {
+            kept.push_back(std::to_string(cube) + " (since frame " + std::to_string(renderedFrames_[cube]) +
+                           ")");
+            continue;
+        }
+        renderCube(frame, cube, shadowConstants);
+        renderedCubes_[cube] = sphere;
+        renderedFrames_[cube] = frame.frameIndex();
+        rendered[cube] = true;
+    }
+    if (kept.size() == cubes.size()) {
+        const uint64_t last = *std::max_element(renderedFrames_.begin(), renderedFrames_.end());
+        frame.skip("point shadows", "unchanged since frame " + std::to_string(last));
+    } else if (!kept.empty()) {
+        std::string list;
+        for (const std::string& k : kept) {
+            list += (list.empty() ? "" : ", ") + k;
+        }
+        frame.skip("point shadows: unchanged cubes", list);
+    }
+    return rendered;
 }
 
 } // namespace lumina::gi

@@ -2,14 +2,15 @@
 // Point and spot light shadows (shaders/deferred/point_shadow.hlsl): one cube per
 // shadow-casting light (at most LUMINA_MAX_SHADOWED_LIGHTS), six faces rendered as array
 // layers 6 x cube + face of an R32F cube array holding distance / shadow range, with a D32
-// array of the same layers for depth testing. Re-rendered only when a shadowed light or the
-// geometry changes.
+// array of the same layers for depth testing. A cube is re-rendered only when its light moved
+// or changed range, or geometry moved within its range; the others keep their texels.
 #include "gi/core/frame_context.h"
 #include "gi/deferred/draw_lists.h"
 #include "gi/gpu_scene/gpu_scene.h"
 
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <span>
 #include <vector>
 
 namespace lumina::gi {
@@ -19,8 +20,11 @@ public:
     PointShadowPass(rhi::IDevice& device, const GpuScene& gpuScene, uint32_t faceSize);
 
     // cubes: per shadowed light, xyz position and w shadow range (DeferredShadowConstants::pointLights).
-    void record(FrameContext& frame, const std::vector<glm::vec4>& cubes,
-                const rhi::BufferHandle& shadowConstants, uint64_t geometryVersion);
+    // movedRegions: world boxes where geometry moved since the last call. Returns, per cube,
+    // whether it was rendered this frame.
+    std::vector<bool> record(FrameContext& frame, const std::vector<glm::vec4>& cubes,
+                             const rhi::BufferHandle& shadowConstants,
+                             std::span<const scene::Bounds> movedRegions);
 
     // The cube array the direct-light pass samples (a cleared 1x1 cube while there is none).
     const rhi::TextureHandle& maps() const { return cubeCount_ > 0 ? distance_ : placeholder_; }
@@ -28,7 +32,9 @@ public:
     uint32_t faceSize() const { return faceSize_; }
 
 private:
-    void allocate(uint32_t cubes);
+    // True when the array was (re)allocated: every cube needs drawing.
+    bool allocate(uint32_t cubes);
+    void renderCube(FrameContext& frame, uint32_t cube, const rhi::BufferHandle& shadowConstants);
 
     rhi::IDevice& device_;
     const GpuScene& gpuScene_;
@@ -41,8 +47,7 @@ private:
     rhi::TextureHandle placeholder_;
     bool placeholderCleared_ = false;
     std::vector<glm::vec4> renderedCubes_;
-    uint64_t renderedGeometry_ = 0;
-    uint64_t renderedFrame_ = 0;
+    std::vector<uint64_t> renderedFrames_; // per cube
 };
 
 } // namespace lumina::gi

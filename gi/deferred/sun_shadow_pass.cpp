@@ -18,8 +18,8 @@ SunShadowPass::SunShadowPass(rhi::IDevice& device, const GpuScene& gpuScene, uin
     : device_(device), gpuScene_(gpuScene), mapSize_(mapSize), draws_(shadowDraws(gpuScene.draws())),
       placeholder_(createDepthMap(device, 1, "sun shadow map (none)")) {}
 
-void SunShadowPass::record(FrameContext& frame, const std::optional<SunShadowFit>& fit,
-                           const rhi::BufferHandle& shadowConstants, uint64_t geometryVersion) {
+bool SunShadowPass::record(FrameContext& frame, const std::optional<SunShadowFit>& fit,
+                           const rhi::BufferHandle& shadowConstants, bool geometryMoved) {
     if (!placeholderCleared_) {
         frame.commands().clearDepth(*placeholder_, 1.0f);
         placeholderCleared_ = true;
@@ -27,11 +27,11 @@ void SunShadowPass::record(FrameContext& frame, const std::optional<SunShadowFit
     if (!fit) {
         valid_ = false;
         frame.skip("sun shadow", "no directional light");
-        return;
+        return false;
     }
-    if (valid_ && fit->viewProjRows == renderedRows_ && geometryVersion == renderedGeometry_) {
+    if (valid_ && fit->viewProjRows == renderedRows_ && !geometryMoved) {
         frame.skip("sun shadow", "unchanged since frame " + std::to_string(renderedFrame_));
-        return;
+        return false;
     }
     if (!map_) {
         map_ = createDepthMap(device_, mapSize_, "sun shadow map");
@@ -50,8 +50,8 @@ void SunShadowPass::record(FrameContext& frame, const std::optional<SunShadowFit
         .draw(shadowRasterDraws(draws_, 0), true);
     valid_ = true;
     renderedRows_ = fit->viewProjRows;
-    renderedGeometry_ = geometryVersion;
     renderedFrame_ = frame.frameIndex();
+    return true;
 }
 
 } // namespace lumina::gi

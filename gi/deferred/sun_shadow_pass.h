@@ -20,9 +20,10 @@ public:
     SunShadowPass(rhi::IDevice& device, const GpuScene& gpuScene, uint32_t mapSize);
 
     // `fit` is empty when the scene has no directional light. shadowConstants holds
-    // DeferredShadowConstants (with `fit` in it); geometryVersion changes whenever geometry moves.
-    void record(FrameContext& frame, const std::optional<SunShadowFit>& fit,
-                const rhi::BufferHandle& shadowConstants, uint64_t geometryVersion);
+    // DeferredShadowConstants (with `fit` in it); geometryMoved: an instance moved since the last
+    // call (the map covers the whole scene, so any move re-renders it). True when it rendered.
+    bool record(FrameContext& frame, const std::optional<SunShadowFit>& fit,
+                const rhi::BufferHandle& shadowConstants, bool geometryMoved);
 
     // The map the direct-light pass samples: a cleared 1x1 map while there is no sun.
     const rhi::TextureHandle& map() const { return valid_ ? map_ : placeholder_; }
@@ -39,7 +40,6 @@ private:
     bool placeholderCleared_ = false;
     bool valid_ = false;
     std::array<glm::vec4, 4> renderedRows_{};
-    uint64_t renderedGeometry_ = 0;
     uint64_t renderedFrame_ = 0;
 };
 

@@ -1,11 +1,15 @@
 #pragma once
 // One view of a scene rendered the way a technique asks (docs/gi.md): the deferred renderer,
-// and for lumen its GI between the deferred lighting and the composite. What `lumina render`
-// and `lumina bench` run.
+// and for lumen its GI between the deferred lighting and the composite. What `lumina render`,
+// `lumina bench` and the viewer run.
 //
 //   FrameRenderer renderer(device, scene, gpuScene, {.technique = GiTechnique::Lumen, ...});
 //   renderer.render(frame);        // every frame
 //   renderer.deferred().ldr();     // the image
+//
+// Dynamic scenes (docs/dynamic_scenes.md): moveInstance, setLights and setEmission (or
+// applyScene, which finds what an animated or edited copy of the scene changed) take effect at
+// the next render(), which recomputes only what the change touched.
 #include "gi/core/frame_context.h"
 #include "gi/deferred/deferred_renderer.h"
 #include "gi/frame/gi_technique.h"
@@ -14,6 +18,7 @@
 
 #include <memory>
 #include <optional>
+#include <vector>
 
 namespace lumina::gi {
 
@@ -23,10 +28,19 @@ struct FrameRendererSettings {
     std::optional<LumenSettings> lumen; // none: lumenPreset(kDefaultPreset, scene)
 };
 
+// What the changes applied by the last render() were, for --timings and tests.
+struct SceneChangeStats {
+    uint32_t movedInstances = 0;
+    uint32_t changedLights = 0; // lights edited, added or removed
+    uint32_t changedMaterials = 0;
+    bool any() const { return movedInstances + changedLights + changedMaterials > 0; }
+};
+
 class FrameRenderer {
 public:
-    // `scene` and `gpuScene` must outlive it.
-    FrameRenderer(rhi::IDevice& device, const scene::Scene& scene, const GpuScene& gpuScene,
+    // `scene` and `gpuScene` must outlive it. The GPU scene's instances and materials follow the
+    // renderer's edits (every renderer sharing it sees them).
+    FrameRenderer(rhi::IDevice& device, const scene::Scene& scene, GpuScene& gpuScene,
                   FrameRendererSettings settings);
 
     void render(FrameContext& frame);
@@ -39,6 +53,27 @@ public:
     // docs/gi_tests.md). For cuts whose old history must not be reused.
     void cameraCut();
 
+    // Places an instance anew. Throws std::out_of_range for a bad index and
+    // std::invalid_argument for a transform that is not finite, is singular, or would mirror an
+    // instance that did not (or unmirror one that did: its faces' winding would flip).
+    void moveInstance(uint32_t instance, const glm::mat4& transform);
+    // The scene's lights from now on: moved, retargeted, recoloured, added or removed. Throws
+    // std::invalid_argument for a light with a non-finite or negative value, or more lights than
+    // the surface cache's masks hold (128).
+    void setLights(std::vector<scene::Light> lights);
+    // A material's emitted radiance. Throws std::out_of_range / std::invalid_argument (negative,
+    // not finite).
+    void setEmission(uint32_t material, const glm::vec3& emission);
+    // Applies every difference between `scene` (a copy of the scene this renderer was made
+    // from, animated or edited: same meshes, instances and materials) and what the renderer
+    // shows: instance transforms, lights, material emission.
+    void applyScene(const scene::Scene& scene);
+
+    const std::vector<glm::mat4>& instanceTransforms() const { return transforms_; }
+    const std::vector<scene::Light>& lights() const { return deferred_.sceneLights(); }
+    // What the last render() applied.
+    const SceneChangeStats& lastChanges() const { return lastChanges_; }
+
     GiTechnique technique() const { return technique_; }
     DeferredRenderer& deferred() { return deferred_; }
     const DeferredRenderer& deferred() const { return deferred_; }
@@ -49,10 +84,25 @@ public:
     float indirectScale() const;
 
 private:
+    void applyPendingChanges(FrameContext& frame);
+    scene::Bounds instanceBounds(uint32_t instance, const glm::mat4& transform) const;
+    scene::Bounds sceneBounds() const;
+
+    const scene::Scene& scene_;
+    GpuScene& gpuScene_;
     GiTechnique technique_;
     scene::Camera camera_;
     DeferredRenderer deferred_;
     std::unique_ptr<LumenGi> lumen_;
+
+    // The dynamic state the renderer shows, and the edits waiting for the next render().
+    std::vector<glm::mat4> transforms_;
+    std::vector<glm::vec3> emissions_;                 // per material
+    std::vector<std::vector<uint32_t>> materialUsers_; // per material: instances drawing it
+    std::vector<std::pair<uint32_t, glm::mat4>> pendingMoves_;
+    std::optional<std::vector<scene::Light>> pendingLights_;
+    std::vector<uint32_t> pendingMaterials_;
+    SceneChangeStats lastChanges_;
 };
 
 } // namespace lumina::gi

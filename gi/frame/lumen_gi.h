@@ -20,6 +20,8 @@
 #include "gi/sdf/scene_sdf.h"
 #include "gi/surface_cache/surface_cache.h"
 
+#include <span>
+
 namespace lumina::gi {
 
 // GPU memory each subsystem allocated when it was built (device allocation deltas), bytes.
@@ -41,6 +43,18 @@ public:
     void record(FrameContext& frame, const DeferredRenderer& deferred, const scene::Camera& camera);
     // The next frame's probes start without history (a camera cut).
     void resetHistory() { probes_.resetHistory(); }
+
+    // A dynamic scene's changes, recorded at the next record() (FrameRenderer applies them).
+    // An instance moved from `before` to `after` (world boxes): its SDF region is recomposed, its
+    // cards placed anew and captured, radiosity restarts near it, and history there is dropped.
+    void moveInstance(uint32_t instance, const glm::mat4& transform, const scene::Bounds& before,
+                      const scene::Bounds& after, std::span<const scene::Light> lights);
+    // The lights changed (DeferredRenderer::setLights made `lightsVersion`); `reach` holds the
+    // world boxes the changed lights reached before or reach now.
+    void setLights(std::span<const scene::Light> lights, uint64_t lightsVersion,
+                   std::span<const scene::Bounds> reach);
+    // A material the instance draws changed (emission); `reach` is where its light may land.
+    void instanceMaterialChanged(uint32_t instance, const scene::Bounds& reach);
 
     // RGBA16F irradiance E per pixel (0 on sky); the composite wants E / pi.
     const rhi::TextureHandle& irradiance() const { return probes_.irradiance(); }

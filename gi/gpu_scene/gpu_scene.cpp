@@ -3,15 +3,17 @@
 #include "gi/gpu_scene/sky_texture.h"
 
 #include <algorithm>
-#include <string>
-
 #include <glm/gtc/matrix_inverse.hpp>
+#include <stdexcept>
+#include <string>
 
 namespace lumina::gi {
 
 namespace {
 
-gpu::float4 row(const glm::mat4& m, int r) { return {m[0][r], m[1][r], m[2][r], m[3][r]}; }
+gpu::float4 row(const glm::mat4& m, int r) {
+    return {m[0][r], m[1][r], m[2][r], m[3][r]};
+}
 
 } // namespace
 
@@ -42,7 +44,8 @@ gpu::GpuInstance packInstance(const scene::Instance& instance) {
         out.objectToWorld[r] = row(instance.transform, r);
         out.normalToWorld[r] = gpu::float4(normalMatrix[0][r], normalMatrix[1][r], normalMatrix[2][r], 0.0f);
     }
-    out.info = gpu::uint4(instance.mesh, glm::determinant(glm::mat3(instance.transform)) < 0.0f ? 1u : 0u, 0u, 0u);
+    out.info =
+        gpu::uint4(instance.mesh, glm::determinant(glm::mat3(instance.transform)) < 0.0f ? 1u : 0u, 0u, 0u);
     return out;
 }
 
@@ -50,7 +53,9 @@ gpu::GpuMaterial packMaterial(const scene::Material& material) {
     gpu::GpuMaterial out{};
     out.baseColor = material.baseColor;
     out.emission = gpu::float4(material.emission, 0.0f);
-    auto layer = [](uint32_t texture) { return texture == scene::kNoTexture ? LUMINA_NO_TEXTURE_LAYER : texture; };
+    auto layer = [](uint32_t texture) {
+        return texture == scene::kNoTexture ? LUMINA_NO_TEXTURE_LAYER : texture;
+    };
     out.textures = gpu::uint4(layer(material.baseColorTexture), layer(material.emissionTexture),
                               material.doubleSided ? LUMINA_MATERIAL_DOUBLE_SIDED : 0u, 0u);
     return out;
@@ -76,23 +81,25 @@ GpuScene::GpuScene(rhi::IDevice& device, const scene::Scene& scene) {
         materialData.push_back(packMaterial(scene::Material{}));
     }
 
+    instanceCount_ = uint32_t(instanceData.size());
+    materialCount_ = uint32_t(scene.materials.size());
     const auto structured = rhi::BufferUsage::Structured;
-    vertices = rhi::createBufferWithData(device,
-                                         {.structStride = sizeof(gpu::GpuVertex), .usage = structured,
-                                          .debugName = "scene vertices"},
-                                         vertexData.data(), vertexData.size() * sizeof(gpu::GpuVertex));
+    vertices = rhi::createBufferWithData(
+        device, {.structStride = sizeof(gpu::GpuVertex), .usage = structured, .debugName = "scene vertices"},
+        vertexData.data(), vertexData.size() * sizeof(gpu::GpuVertex));
     indices = rhi::createBufferWithData(device,
-                                        {.structStride = sizeof(uint32_t), .usage = structured | rhi::BufferUsage::Index,
+                                        {.structStride = sizeof(uint32_t),
+                                         .usage = structured | rhi::BufferUsage::Index,
                                          .debugName = "scene indices"},
                                         indexData.data(), indexData.size() * sizeof(uint32_t));
-    instances = rhi::createBufferWithData(device,
-                                          {.structStride = sizeof(gpu::GpuInstance), .usage = structured,
-                                           .debugName = "scene instances"},
-                                          instanceData.data(), instanceData.size() * sizeof(gpu::GpuInstance));
-    materials = rhi::createBufferWithData(device,
-                                          {.structStride = sizeof(gpu::GpuMaterial), .usage = structured,
-                                           .debugName = "scene materials"},
-                                          materialData.data(), materialData.size() * sizeof(gpu::GpuMaterial));
+    instances = rhi::createBufferWithData(
+        device,
+        {.structStride = sizeof(gpu::GpuInstance), .usage = structured, .debugName = "scene instances"},
+        instanceData.data(), instanceData.size() * sizeof(gpu::GpuInstance));
+    materials = rhi::createBufferWithData(
+        device,
+        {.structStride = sizeof(gpu::GpuMaterial), .usage = structured, .debugName = "scene materials"},
+        materialData.data(), materialData.size() * sizeof(gpu::GpuMaterial));
 
     const TextureArrayData textureData = packTextures(scene);
     textures = device.createTexture({.dimension = rhi::TextureDimension::Texture2DArray,
@@ -131,7 +138,8 @@ GpuScene::GpuScene(rhi::IDevice& device, const scene::Scene& scene) {
             SceneDraw draw{};
             draw.args.vertexOrIndexCount = submesh.indexCount;
             draw.args.firstVertexOrIndex = meshFirstIndex[instance.mesh] + submesh.firstIndex;
-            draw.constants = {i, std::min<uint32_t>(submesh.material, uint32_t(materialData.size() - 1)), 0, 0};
+            draw.constants = {i, std::min<uint32_t>(submesh.material, uint32_t(materialData.size() - 1)), 0,
+                              0};
             draws_.push_back(draw);
         }
     }
@@ -142,6 +150,29 @@ GpuScene::GpuScene(rhi::IDevice& device, const scene::Scene& scene) {
         stats_.textureBytes += mip.size();
     }
     stats_.textureLayerSize = textureData.layerSize;
+}
+
+namespace {
+
+// Records the upload of element `index` of a structured buffer of `count` elements.
+template <typename T>
+void recordElement(rhi::ICommandList& commands, rhi::IBuffer& buffer, const char* what, uint32_t index,
+                   uint32_t count, const T& value) {
+    if (index >= count) {
+        throw std::out_of_range(std::string("GpuScene: ") + what + " " + std::to_string(index) + " of " +
+                                std::to_string(count));
+    }
+    commands.writeBuffer(buffer, &value, sizeof(T), uint64_t(index) * sizeof(T));
+}
+
+} // namespace
+
+void GpuScene::recordInstance(rhi::ICommandList& commands, uint32_t index, const scene::Instance& instance) {
+    recordElement(commands, *instances, "instance", index, instanceCount_, packInstance(instance));
+}
+
+void GpuScene::recordMaterial(rhi::ICommandList& commands, uint32_t index, const scene::Material& material) {
+    recordElement(commands, *materials, "material", index, materialCount_, packMaterial(material));
 }
 
 } // namespace lumina::gi

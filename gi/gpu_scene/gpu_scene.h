@@ -2,13 +2,15 @@
 // The scene on the GPU, uploaded once and shared by every renderer (deferred, path tracer,
 // surface cache): one vertex buffer, one index buffer of absolute indices, instances,
 // materials, material textures in one 2D texture array (lavapipe has no descriptor
-// indexing, so "bindless" is a layer index), the sky, and the draw list.
-#include <cstdint>
-#include <vector>
-
+// indexing, so "bindless" is a layer index), the sky, and the draw list. Instance transforms
+// and material emission change in place (a dynamic scene, docs/dynamic_scenes.md); geometry,
+// textures and the draw list do not.
 #include "gi/scene/scene.h"
 #include "rhi/rhi.h"
 #include "shaders/common/scene_shared.h"
+
+#include <cstdint>
+#include <vector>
 
 namespace lumina::gi {
 
@@ -39,11 +41,18 @@ public:
     rhi::SamplerHandle materialSampler; // trilinear, wrap
     rhi::TextureHandle sky;             // RGBA32F latitude-longitude radiance (sky_texture.h)
 
+    // Records the upload of one instance's transform or one material's constants: every pass
+    // recorded after it (in this or a later frame) reads the new value.
+    void recordInstance(rhi::ICommandList& commands, uint32_t index, const scene::Instance& instance);
+    void recordMaterial(rhi::ICommandList& commands, uint32_t index, const scene::Material& material);
+
     const std::vector<SceneDraw>& draws() const { return draws_; }
     const GpuSceneStats& stats() const { return stats_; }
 
 private:
     std::vector<SceneDraw> draws_;
+    uint32_t instanceCount_ = 0;
+    uint32_t materialCount_ = 0;
     GpuSceneStats stats_;
 };
 

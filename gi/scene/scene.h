@@ -115,6 +115,7 @@ struct Light {
     glm::vec3 direction{0.0f, 0.0f, -1.0f}; // world space, unit: where the light travels
 
     glm::vec3 strength() const { return color * intensity; }
+    bool operator==(const Light&) const = default;
 };
 
 // A perspective camera in world space; forward and up are unit length and orthogonal,

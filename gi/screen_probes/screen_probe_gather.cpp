@@ -94,7 +94,27 @@ void ScreenProbeGather::uploadConstants(rhi::ICommandList& commands, const Scree
                              settings_.screenHistoryBlend, settings_.lightingPdfFloor);
     c.filter = gpu::float4(settings_.filterPlaneScale, settings_.filterNormalPower,
                            settings_.historyPlaneTolerance, settings_.historyNormalTolerance);
+    c.changeRegionCount = uint32_t(changes_.size());
+    for (size_t i = 0; i < changes_.size(); ++i) {
+        c.changeRegionMin[i] = gpu::float4(changes_[i].box.min, changes_[i].keep);
+        c.changeRegionMax[i] = gpu::float4(changes_[i].box.max, 0.0f);
+    }
+    changes_.clear();
     commands.writeBuffer(*r.constants, &c, sizeof(c));
+}
+
+void ScreenProbeGather::invalidateHistory(const scene::Bounds& region, float keep) {
+    if (region.empty()) {
+        return;
+    }
+    keep = std::clamp(keep, 0.0f, 1.0f);
+    if (changes_.size() == LUMINA_SP_MAX_CHANGE_REGIONS) {
+        // Full: the last slot grows to hold this one too, keeping the smaller share.
+        changes_.back().box.extend(region);
+        changes_.back().keep = std::min(changes_.back().keep, keep);
+        return;
+    }
+    changes_.push_back({region, keep});
 }
 
 void ScreenProbeGather::record(FrameContext& frame, const ScreenProbeInputs& inputs) {

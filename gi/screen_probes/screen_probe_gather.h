@@ -37,6 +37,7 @@
 
 #include <glm/glm.hpp>
 #include <optional>
+#include <vector>
 
 namespace lumina::gi {
 
@@ -73,6 +74,10 @@ public:
     void record(FrameContext& frame, const ScreenProbeInputs& inputs);
     // The next frame starts without history (a camera cut, a teleport).
     void resetHistory() { previousCamera_.reset(); }
+    // The scene changed within `region` (world box): at the next frame, probe and screen history
+    // there keep only `keep` (0..1) of their weight, so the old light does not trail behind a moved
+    // object or a changed light. More regions than the constants hold are merged.
+    void invalidateHistory(const scene::Bounds& region, float keep);
 
     // This frame's result: rgb irradiance (pi x L under a uniform radiance L), a = frames accumulated.
     const rhi::TextureHandle& irradiance() const { return resources_.screenIrradiance[current_]; }
@@ -103,6 +108,11 @@ private:
     bool voxelFallbackCleared_ = false;
     bool nearFieldTraced_ = false;
     std::optional<gpu::GpuCamera> previousCamera_;
+    struct ChangeRegion {
+        scene::Bounds box;
+        float keep = 0.0f;
+    };
+    std::vector<ChangeRegion> changes_; // until the next record()
 
     ScreenProbePlacementPass placement_;
     ProbeBrdfPdfPass brdfPdf_;

@@ -43,6 +43,10 @@ public:
 
     const rhi::BufferHandle& probes() const { return filtered_; }
 
+    // How far its rays reach (world): a change farther than this from a card does not reach it
+    // in one bounce.
+    float maxDistance() const { return maxDistance_; }
+
 private:
     const sdf::SceneSdf& sdf_;
     rhi::TextureHandle sky_;

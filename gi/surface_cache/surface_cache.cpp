@@ -43,6 +43,16 @@ std::vector<uint32_t> tilesWithCards(const TileAllocator& allocator) {
     return tiles;
 }
 
+// The atlas tiles of a card's rectangle, row-major tile indices.
+void appendCardTiles(const SurfaceCards& cards, uint32_t card, std::vector<uint32_t>& tiles) {
+    const glm::uvec4 rect = cards.cards()[card].atlasRect / kTileSize;
+    for (uint32_t y = rect.y; y < rect.y + rect.w; ++y) {
+        for (uint32_t x = rect.x; x < rect.x + rect.z; ++x) {
+            tiles.push_back(y * cards.atlas().tilesX() + x);
+        }
+    }
+}
+
 float halfAt(const std::vector<uint8_t>& bytes, size_t index) {
     return glm::unpackHalf1x16(uint16_t(bytes[2 * index] | (bytes[2 * index + 1] << 8)));
 }
@@ -61,7 +71,7 @@ SurfaceCache::SurfaceCache(rhi::IDevice& device, const scene::Scene& scene, cons
               radiosityOriginOffset(lighting.trace, sdf)),
       radiosity_(device, settings.atlasSize, sdf, gpuScene.sky, lighting.trace),
       schedule_(lighting.schedule, maxAlbedo(scene)), cardTiles_(tilesWithCards(cards_.atlas())),
-      cardBvh_(buildCardBvh(cards_.cards())) {
+      cardBvh_(buildCardBvh(cards_.cards())), lights_(scene.lights) {
     const size_t cardBytes = std::max<size_t>(cards_.cards().size(), 1) * sizeof(gpu::SurfaceCard);
     cardBuffer_ = device.createBuffer({.size = cardBytes,
                                        .structStride = sizeof(gpu::SurfaceCard),
@@ -94,20 +104,84 @@ bool SurfaceCache::recordDirectLight(gi::FrameContext& frame, const std::optiona
         frame.skip(kPass, "no lights given");
         return false;
     }
-    const std::pair<uint64_t, uint64_t> versions{lights->lightsVersion, lights->geometryVersion};
-    const bool lightsChanged = directVersions_ != versions;
-    if (!lightsChanged && capturedTiles.empty()) {
-        frame.skip(kPass, "no light or card changed");
+    // Every card when the lights changed without setLights saying how (or on the first update);
+    // otherwise the cards a changed light reaches, those a re-rendered shadow map covers, and
+    // the cards just captured.
+    const bool newVersion = directLightsVersion_ != lights->lightsVersion;
+    const bool all = newVersion && announcedLightsVersion_ != lights->lightsVersion;
+    std::vector<uint32_t> cards = newVersion ? relightCards_ : std::vector<uint32_t>{};
+    glm::uvec4 reshadowed(0u);
+    for (size_t light = 0; light < lights->shadowFrames.size() && light < LUMINA_CARD_LIGHT_MASK_BITS;
+         ++light) {
+        const uint64_t seen = light < directShadowFrames_.size() ? directShadowFrames_[light] : 0;
+        if (lights->shadowFrames[light] != seen) {
+            reshadowed[int(light / 32)] |= 1u << (light % 32);
+        }
+    }
+    if (!all && reshadowed != glm::uvec4(0u)) {
+        for (uint32_t card = 0; card < cards_.cards().size(); ++card) {
+            if ((cards_.cards()[card].lightMask & reshadowed) != glm::uvec4(0u)) {
+                cards.push_back(card);
+            }
+        }
+    }
+    std::vector<uint32_t> tiles;
+    if (all) {
+        tiles = cardTiles_;
+    } else {
+        std::sort(cards.begin(), cards.end());
+        cards.erase(std::unique(cards.begin(), cards.end()), cards.end());
+        for (uint32_t card : cards) {
+            appendCardTiles(cards_, card, tiles);
+        }
+        tiles.insert(tiles.end(), capturedTiles.begin(), capturedTiles.end());
+        std::sort(tiles.begin(), tiles.end());
+        tiles.erase(std::unique(tiles.begin(), tiles.end()), tiles.end());
+    }
+    directLightsVersion_ = lights->lightsVersion;
+    directShadowFrames_ = lights->shadowFrames;
+    relightCards_.clear();
+    if (tiles.empty()) {
+        frame.skip(kPass, "no light, shadow or card changed");
         return false;
     }
-    directTiles_.recordUpload(frame.commands(), lightsChanged ? cardTiles_ : capturedTiles);
+    directTiles_.recordUpload(frame.commands(), tiles);
     const AtlasSurfaceBindings surfaces{atlas_, tileOwner_.texture(), cardBuffer_, capture_.depth()};
     directLight_.record(frame, surfaces, *lights, directTiles_);
-    if (lightsChanged) {
-        schedule_.restart(); // the light the bounces carry changed
+    if (all) {
+        schedule_.restart(); // the light the bounces carry changed everywhere
+    } else if (!cards.empty()) {
+        std::vector<scene::Bounds> regions;
+        for (uint32_t card : cards) {
+            regions.push_back(cardBounds(cards_.cards()[card]));
+        }
+        restartRadiosityNear(regions);
     }
-    directVersions_ = versions;
     return true;
+}
+
+void SurfaceCache::restartRadiosityNear(std::span<const scene::Bounds> regions) {
+    if (regions.empty()) {
+        return;
+    }
+    scene::Bounds all;
+    for (const scene::Bounds& region : regions) {
+        all.extend(region);
+    }
+    const float reach = radiosity_.maxDistance();
+    std::vector<uint32_t> tiles;
+    for (uint32_t card = 0; card < cards_.cards().size(); ++card) {
+        const scene::Bounds bounds = cardBounds(cards_.cards()[card]);
+        const scene::Bounds grown{bounds.min - glm::vec3(reach), bounds.max + glm::vec3(reach)};
+        if (!grown.overlaps(all)) {
+            continue; // quick reject against the union, then region by region
+        }
+        if (std::any_of(regions.begin(), regions.end(),
+                        [&](const scene::Bounds& region) { return grown.overlaps(region); })) {
+            appendCardTiles(cards_, card, tiles);
+        }
+    }
+    schedule_.markDirty(tiles);
 }
 
 void SurfaceCache::updateLod(const glm::vec3& viewer) {
@@ -156,12 +230,7 @@ void SurfaceCache::update(gi::FrameContext& frame, const std::optional<gi::Shado
         capture_.record(frame, atlas_, cardBuffer_, cards_.cards(), dirty);
         for (uint32_t card : dirty) {
             cards_.markCaptured(card, uint32_t(frame.frameIndex()));
-            const glm::uvec4 rect = cards_.cards()[card].atlasRect / kTileSize;
-            for (uint32_t y = rect.y; y < rect.y + rect.w; ++y) {
-                for (uint32_t x = rect.x; x < rect.x + rect.z; ++x) {
-                    dirtyTiles.push_back(y * cards_.atlas().tilesX() + x);
-                }
-            }
+            appendCardTiles(cards_, card, dirtyTiles);
         }
         schedule_.markDirty(dirtyTiles);
     }
@@ -202,12 +271,48 @@ void SurfaceCache::update(gi::FrameContext& frame, const std::optional<gi::Shado
 
 void SurfaceCache::moveInstance(uint32_t instance, const glm::mat4& transform,
                                 std::span<const scene::Light> lights) {
+    std::vector<scene::Bounds> regions;
+    const auto addInstanceBounds = [&] {
+        scene::Bounds box;
+        for (uint32_t card = cards_.firstCard(instance);
+             card < cards_.firstCard(instance) + cards_.cardCount(instance); ++card) {
+            box.extend(cardBounds(cards_.cards()[card]));
+        }
+        regions.push_back(box);
+    };
+    addInstanceBounds();
     cards_.moveInstance(instance, transform, lights);
+    addInstanceBounds();
     cardBvh_ = buildCardBvh(cards_.cards());
     cardTiles_ = tilesWithCards(cards_.atlas());
     schedule_.setTiles(cardTiles_);
-    schedule_.restart();
+    restartRadiosityNear(regions);
     cardsChanged_ = true;
+}
+
+void SurfaceCache::setLights(std::span<const scene::Light> lights, uint64_t lightsVersion) {
+    std::vector<uint32_t> changed;
+    for (uint32_t i = 0; i < std::max(lights.size(), lights_.size()); ++i) {
+        const bool same = i < lights.size() && i < lights_.size() && lights[i] == lights_[i];
+        if (!same) {
+            changed.push_back(i);
+        }
+    }
+    const std::vector<uint32_t> touched = cards_.setLights(lights, changed);
+    relightCards_.insert(relightCards_.end(), touched.begin(), touched.end());
+    lights_.assign(lights.begin(), lights.end());
+    announcedLightsVersion_ = lightsVersion;
+    cardsChanged_ = true; // the masks
+}
+
+void SurfaceCache::instanceMaterialChanged(uint32_t instance) {
+    cards_.markInstanceDirty(instance);
+    scene::Bounds box;
+    for (uint32_t card = cards_.firstCard(instance);
+         card < cards_.firstCard(instance) + cards_.cardCount(instance); ++card) {
+        box.extend(cardBounds(cards_.cards()[card]));
+    }
+    restartRadiosityNear(std::vector<scene::Bounds>{box});
 }
 
 void SurfaceCache::lightsChanged() {

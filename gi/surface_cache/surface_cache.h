@@ -60,9 +60,19 @@ public:
     void update(gi::FrameContext& frame, const std::optional<gi::ShadowedLights>& lights = std::nullopt,
                 const std::optional<glm::vec3>& viewer = std::nullopt);
 
-    // An instance moved: its cards are placed anew and captured at the next update, and
-    // radiosity restarts.
+    // An instance moved: its cards are placed anew and captured at the next update, with the
+    // cards it overlapped before or overlaps now; radiosity restarts within one ray's reach of
+    // its old and new boxes.
     void moveInstance(uint32_t instance, const glm::mat4& transform, std::span<const scene::Light> lights);
+    // The scene's lights are now `lights`, as DeferredRenderer::setLights gave them version
+    // `lightsVersion` (so the update that sees that version knows what changed): light masks are
+    // recomputed, only the cards a changed light reached before or reaches now are lit again, and
+    // radiosity restarts within one ray's reach of them. Without this call a new lights version
+    // re-lights every card.
+    void setLights(std::span<const scene::Light> lights, uint64_t lightsVersion);
+    // The cards of `instance` are captured again (a material it draws changed: emission), and
+    // radiosity restarts near them.
+    void instanceMaterialChanged(uint32_t instance);
     // A light changed: radiosity restarts.
     void lightsChanged();
 
@@ -102,6 +112,8 @@ public:
 private:
     void updateLod(const glm::vec3& viewer);
     void uploadCards(rhi::ICommandList& commands);
+    // Radiosity starts over on the tiles of cards within a ray's reach of `regions`.
+    void restartRadiosityNear(std::span<const scene::Bounds> regions);
     // Records the direct light where it is stale; true when it ran.
     bool recordDirectLight(gi::FrameContext& frame, const std::optional<gi::ShadowedLights>& lights,
                            const std::vector<uint32_t>& capturedTiles);
@@ -129,8 +141,13 @@ private:
     bool cardsChanged_ = true;           // card buffer and tile-to-card lookup need an upload
     bool indirectChanged_ = false;       // radiosity wrote the indirect layer after the last combine
     uint32_t updates_ = 0;
-    // The lights' versions the direct layer was computed with; none before the first.
-    std::optional<std::pair<uint64_t, uint64_t>> directVersions_;
+    // What the direct layer was computed with: the lights' version (none before the first) and,
+    // per light, the frame of the shadow map it read (ShadowedLights::shadowFrames).
+    std::optional<uint64_t> directLightsVersion_;
+    std::vector<uint64_t> directShadowFrames_;
+    std::vector<scene::Light> lights_;               // as of the last setLights
+    std::optional<uint64_t> announcedLightsVersion_; // the version setLights announced
+    std::vector<uint32_t> relightCards_;             // cards a changed light reaches
 };
 
 } // namespace lumina::surface_cache

@@ -31,7 +31,7 @@ struct SurfaceCacheSettings {
     float lodHysteresis = 1.5f;       // a card changes level only when its projected size moved
                                       // past the level's bound by this factor (no flicker at a bound)
     uint32_t lodChangesPerFrame = 64; // cards given a new level (reallocated) per frame at most
-    uint32_t capturesPerFrame = 64;   // cards captured per update after the first (which captures
+    uint32_t capturesPerFrame = 50;   // cards captured per update after the first (which captures
                                       // all): a large change is spread over frames, never a spike
 };
 

@@ -55,6 +55,7 @@ SurfaceCards::SurfaceCards(const scene::Scene& scene, const SurfaceCacheSettings
     cards_.resize(count);
     cardTiles_.resize(count);
     fullTiles_.resize(count);
+    surfaceBounds_.resize(count);
     levels_.assign(count, kCardEvicted);
     for (uint32_t i = 0; i < scene.instances.size(); ++i) {
         const scene::Instance& instance = scene.instances[i];
@@ -131,6 +132,7 @@ void SurfaceCards::placeGeometry(uint32_t card, const MeshCard& meshCard, const 
     c.boundsMinAndFlags.w = gpu::asfloat(flags | visible | (meshCard.twoSided ? LUMINA_CARD_TWO_SIDED : 0u));
     c.atlasRect = rect;
     c.lightMask = lightMask(placed.unpaddedBounds, lights);
+    surfaceBounds_[card] = placed.unpaddedBounds;
     fullTiles_[card] = glm::uvec2(placed.tilesX, placed.tilesY);
 }
 
@@ -317,6 +319,39 @@ AtlasOccupancy SurfaceCards::occupancy() const {
         }
     }
     return o;
+}
+
+std::vector<uint32_t> SurfaceCards::setLights(std::span<const scene::Light> lights,
+                                              std::span<const uint32_t> changedLights) {
+    glm::uvec4 changed(0u);
+    for (uint32_t light : changedLights) {
+        if (light < LUMINA_CARD_LIGHT_MASK_BITS) {
+            changed[int(light / 32)] |= 1u << (light % 32);
+        }
+    }
+    std::vector<glm::uvec4> masks(cards_.size());
+    for (size_t card = 0; card < cards_.size(); ++card) {
+        masks[card] = lightMask(surfaceBounds_[card], lights); // throws before anything changed
+    }
+    std::vector<uint32_t> touched;
+    for (uint32_t card = 0; card < cards_.size(); ++card) {
+        const glm::uvec4 reached = (cards_[card].lightMask | masks[card]) & changed;
+        if (reached != glm::uvec4(0u)) {
+            touched.push_back(card);
+        }
+        cards_[card].lightMask = masks[card];
+    }
+    return touched;
+}
+
+void SurfaceCards::markInstanceDirty(uint32_t instance) {
+    if (instance + 1 >= instanceFirst_.size()) {
+        throw std::out_of_range("SurfaceCards::markInstanceDirty: instance " + std::to_string(instance) +
+                                " of " + std::to_string(instanceFirst_.size() - 1));
+    }
+    for (uint32_t card = instanceFirst_[instance]; card < instanceFirst_[instance + 1]; ++card) {
+        setFlag(card, LUMINA_CARD_DIRTY, true);
+    }
 }
 
 void SurfaceCards::moveInstance(uint32_t instance, const glm::mat4& transform,

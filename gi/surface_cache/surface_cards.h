@@ -85,6 +85,13 @@ public:
     // there). The card BVH must be rebuilt afterwards. Throws std::invalid_argument for a
     // singular transform, with nothing changed.
     void moveInstance(uint32_t instance, const glm::mat4& transform, std::span<const scene::Light> lights);
+    // Recomputes every card's light mask for `lights` (the scene's lights now). Returns the cards
+    // that a light in `changedLights` reached before or reaches now: their direct light must be
+    // computed again. Throws std::invalid_argument for more lights than mask bits.
+    std::vector<uint32_t> setLights(std::span<const scene::Light> lights,
+                                    std::span<const uint32_t> changedLights);
+    // The instance's cards are captured again (its material changed: emission, albedo).
+    void markInstanceDirty(uint32_t instance);
     // The capture pass has written the card's texels at `frame`: clears DIRTY.
     void markCaptured(uint32_t card, uint32_t frame);
     // Dirty cards that hold texels, most useful first; at most `limit`.
@@ -114,11 +121,12 @@ private:
     TileAllocator atlas_;
     std::vector<std::vector<MeshCard>> meshCards_;
     std::vector<gpu::SurfaceCard> cards_;
-    std::vector<TileRect> cardTiles_;     // zero area while evicted
-    std::vector<glm::uvec2> fullTiles_;   // tiles at level 0
-    std::vector<uint8_t> levels_;         // current level, or kCardEvicted
-    std::vector<float> priorities_;       // from the last plan's viewer
-    std::vector<uint32_t> instanceFirst_; // instance count + 1 entries
+    std::vector<TileRect> cardTiles_;      // zero area while evicted
+    std::vector<glm::uvec2> fullTiles_;    // tiles at level 0
+    std::vector<uint8_t> levels_;          // current level, or kCardEvicted
+    std::vector<float> priorities_;        // from the last plan's viewer
+    std::vector<bvh::Aabb> surfaceBounds_; // per card: its surface's world box (unpadded), for masks
+    std::vector<uint32_t> instanceFirst_;  // instance count + 1 entries
     std::vector<std::string> instanceNames_;
     std::vector<std::string> meshNames_;
 };

@@ -56,7 +56,8 @@ groupshared float gsSolidAngle[LUMINA_SP_PROBE_TEXELS];
         x.rgb *= limit / l;
     }
     const float a = gSp.temporal.x;
-    const float oldWeight = (1.0 - a) * history.a;
+    // Where the scene changed, the old light is (partly) wrong: it keeps less weight.
+    const float oldWeight = (1.0 - a) * history.a * historyKeep(current.positionAndDepth.xyz);
     const float newWeight = a * x.a;
     const float weight = oldWeight + newWeight;
     float4 result = weight > 0.0 ? float4((oldWeight * history.rgb + newWeight * x.rgb) / weight, weight)

@@ -56,6 +56,18 @@ int historyProbeCandidate(float3 world) {
 // filter.z x view depth), facing the same way (cosine at least filter.w) and within
 // LUMINA_SP_HISTORY_MAX_CELLS cells' world size of it. A probe that moved in world space
 // (disocclusion, a moved object) loses its history.
+// The share of its weight that history at `world` keeps: the least of the change regions holding
+// it, 1 outside them (gi/screen_probes/screen_probe_gather.h, invalidateHistory).
+float historyKeep(float3 world) {
+    float keep = 1.0;
+    for (uint i = 0u; i < gSp.changeRegionCount; ++i) {
+        if (all(world >= gSp.changeRegionMin[i].xyz) && all(world <= gSp.changeRegionMax[i].xyz)) {
+            keep = min(keep, gSp.changeRegionMin[i].w);
+        }
+    }
+    return keep;
+}
+
 bool historyMatches(ScreenProbe current, ScreenProbe previous) {
     if (!probeIsValid(previous)) {
         return false;

@@ -27,6 +27,10 @@ LUMINA_GPU_NAMESPACE_BEGIN
 #define LUMINA_SP_HISTORY_MAX_CELLS 1.5f
 
 // ScreenProbe::info.x
+// World boxes where the scene changed since the last frame (a moved object's old and new place, a
+// changed light's reach): history inside them keeps only a fraction of its weight.
+#define LUMINA_SP_MAX_CHANGE_REGIONS 8u
+
 #define LUMINA_SP_PROBE_VALID 1u
 // ScreenProbeConstants::screen.w
 #define LUMINA_SP_FLAG_PROBE_HISTORY 1u  // the previous frame's probes and radiance may be reused
@@ -84,11 +88,17 @@ struct ScreenProbeConstants {
                               // tolerance (x view depth); w: cos of the history normal tolerance
     VoxelGridInfo voxelGrid;  // the surface cache's voxel lighting (near-field fallback; far hits with
                               // LUMINA_SP_FLAG_VOXEL_GRID); zero without a surface cache
+    uint changeRegionCount;   // regions in use, at most LUMINA_SP_MAX_CHANGE_REGIONS
+    uint changePadding0;
+    uint changePadding1;
+    uint changePadding2;
+    float4 changeRegionMin[LUMINA_SP_MAX_CHANGE_REGIONS]; // xyz: world corner; w: history weight kept (0..1)
+    float4 changeRegionMax[LUMINA_SP_MAX_CHANGE_REGIONS]; // xyz: far corner; w: 0
 };
 
 LUMINA_STATIC_ASSERT_SIZE(ScreenProbe, 48);
 LUMINA_STATIC_ASSERT_SIZE(ProbeRay, 32);
-LUMINA_STATIC_ASSERT_SIZE(ScreenProbeConstants, 448);
+LUMINA_STATIC_ASSERT_SIZE(ScreenProbeConstants, 720);
 
 LUMINA_GPU_NAMESPACE_END
 

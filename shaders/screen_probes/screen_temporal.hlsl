@@ -51,6 +51,8 @@ LUMINA_UAV_FORMAT(rgba32f) RWTexture2D<float4> gPositionHistory : register(u1);
         const float4 old = gPreviousPosition.Load(at);
         if (old.w > 0.0 && length(old.xyz - position.xyz) <= gSp.filter.z * position.w) {
             history = gPreviousIrradiance.Load(at);
+            // Fewer frames of history where the scene changed (0: none).
+            history.a = floor(history.a * historyKeep(position.xyz));
         }
     }
     float4 result = float4(current.rgb, 1.0);
