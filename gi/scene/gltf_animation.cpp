@@ -64,6 +64,11 @@ std::vector<float> keyValues(const Context& context, int accessor, int component
         if (!std::isfinite(raw[i])) {
             context.fail(where + ": value " + std::to_string(i / size_t(components)) + " is not finite");
         }
+        // As for static nodes (gltf_internal.h): beyond this, float positions lose their meaning.
+        if (std::abs(raw[i]) > kMaxCoordinate) {
+            context.fail(where + ": value " + std::to_string(i / size_t(components)) + " holds " +
+                         std::to_string(raw[i]) + ", beyond the supported 1e8");
+        }
     }
     return raw;
 }

@@ -12,6 +12,9 @@ namespace {
 
 // Beyond any animation a renderer plays: a day at 60 frames per second is 5.2 million frames.
 constexpr double kMaxKeySeconds = 1e7;
+// Positions, offsets and pivots beyond this many scene units are refused, as the glTF loader
+// refuses such geometry: float positions there are spaced more than 8 units apart.
+constexpr float kMaxCoordinate = 1e8f;
 
 std::string formatTime(double seconds) {
     char text[32];
@@ -87,6 +90,13 @@ glm::vec3 nonNegative(const JsonObject& key, std::string_view name, const glm::v
     return value;
 }
 
+glm::vec3 withinReach(const JsonObject& key, std::string_view name, const glm::vec3& value) {
+    if (glm::any(glm::greaterThan(glm::abs(value), glm::vec3(kMaxCoordinate)))) {
+        key.fail(name, "must be within 1e8 scene units of the origin");
+    }
+    return value;
+}
+
 glm::vec3 unit(const JsonObject& key, std::string_view name, const glm::vec3& value) {
     if (!(glm::length(value) > 1e-6f)) {
         key.fail(name, "must not be a zero vector");
@@ -110,7 +120,7 @@ ScriptedObject parseObject(const nlohmann::json& value, const std::string& where
     ScriptedObject out;
     out.where = where;
     out.instance = requiredName(entry, "instance");
-    out.pivot = entry.vec3("pivot").value_or(glm::vec3(0.0f));
+    out.pivot = withinReach(entry, "pivot", entry.vec3("pivot").value_or(glm::vec3(0.0f)));
     out.translation.interpolation = out.rotation.interpolation = interpolation(entry);
     std::optional<double> previous;
     forEachKey(entry, where, [&](const std::string& keyWhere, const nlohmann::json& keyValue) {
@@ -118,7 +128,7 @@ ScriptedObject parseObject(const nlohmann::json& value, const std::string& where
         const double time = keyTime(key, framesPerSecond, previous);
         previous = time;
         if (const auto translation = key.vec3("translation")) {
-            push(out.translation, time, *translation);
+            push(out.translation, time, withinReach(key, "translation", *translation));
         }
         if (const nlohmann::json* r = key.object("rotation")) {
             push(out.rotation, time, rotation(*r, keyWhere + ".rotation", file));
@@ -154,7 +164,7 @@ ScriptedLight parseLight(const nlohmann::json& value, const std::string& where, 
         const double time = keyTime(key, framesPerSecond, previous);
         previous = time;
         if (const auto position = key.vec3("position")) {
-            push(out.position, time, *position);
+            push(out.position, time, withinReach(key, "position", *position));
         }
         if (const auto direction = key.vec3("direction")) {
             push(out.direction, time, unit(key, "direction", *direction));

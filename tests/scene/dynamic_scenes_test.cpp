@@ -1,6 +1,7 @@
 // The built-in dynamic scenes load with their animation and do what their scene files say:
 // the Cornell box's short block slides and comes back, the atrium's sun crosses the sky with a
 // unit direction, the door turns about its hinge.
+#include "gi/scene/animation_summary.h"
 #include "gi/scene/generators/generators.h"
 #include "gi/scene/scene_loader.h"
 
@@ -117,6 +118,26 @@ TEST(DynamicScenes, DoorTurnsAboutItsHinge) {
     EXPECT_NEAR(open.z, hinge.z, 1e-4f);
     animateScene(scene, 480);
     EXPECT_EQ(scene.instances[door].transform, closed);
+}
+
+} // namespace
+} // namespace lumina::scene
+
+namespace lumina::scene {
+namespace {
+
+TEST(DynamicScenes, SummariesNameTracksAndLoopLength) {
+    const std::vector<std::string> moving = animationSummary(loadScene("cornell_box_moving"));
+    ASSERT_EQ(moving.size(), 2u);
+    EXPECT_EQ(
+        moving[0],
+        "1 tracks on 1 instances, 0 lights, 0 materials; loops every 6 s (360 frames at 60 per second)");
+    EXPECT_EQ(moving[1], "object 'short block': translation (5 keys, linear)");
+    const std::vector<std::string> day = animationSummary(loadScene("atrium_day"));
+    ASSERT_EQ(day.size(), 2u);
+    EXPECT_EQ(day[1],
+              "light 'sun': sun path (5 keys, linear), colour (5 keys, linear), intensity (5 keys, linear)");
+    EXPECT_EQ(animationSummary(loadScene("cornell_box")), std::vector<std::string>{"none"});
 }
 
 } // namespace

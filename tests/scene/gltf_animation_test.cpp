@@ -222,6 +222,8 @@ TEST(GltfAnimation, MalformedAnimationsAreErrors) {
         "NaN value", [&](AnimationData& d) { d.slideValues[4] = nan; },
         "channel 0 output: value 1 is not finite");
     data(
+        "huge value", [&](AnimationData& d) { d.slideValues[3] = 1e30f; }, "value 1 holds");
+    data(
         "zero quaternion", [](AnimationData& d) { d.turnValues = {0, 0, 0, 1, 0, 0, 0, 0}; },
         "key 1 is a zero-length quaternion");
     data(

@@ -120,6 +120,8 @@ TEST(SceneFileAnimation, MistakesAreErrorsNamingTheKey) {
          "'animation.objects[0].keys[0].rotation.axis' must not be a zero vector"},
         {R"(, "animation": {"objects": [{"instance": "short block", "keys": [{"frame": 0, "rotation": {"degrees": 5}}]}]})",
          "'animation.objects[0].keys[0].rotation.axis' is required"},
+        {R"(, "animation": {"objects": [{"instance": "short block", "keys": [{"frame": 0, "translation": [1e30, 0, 0]}]}]})",
+         "'animation.objects[0].keys[0].translation' must be within 1e8"},
         {R"(, "animation": {"objects": [{"instance": "short block", "keys": [{"frame": 0}]}]})",
          "set neither 'translation' nor 'rotation'"},
         {R"(, "animation": {"objects": [{"instance": "short block", "interpolation": "cubic", "keys": [{"frame": 0, "translation": [0,0,0]}]}]})",
