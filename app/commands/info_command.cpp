@@ -3,6 +3,7 @@
 #include "app/command.h"
 #include "app/commands/scene_options.h"
 #include "gi/frame/gi_technique.h"
+#include "gi/scene/animation_summary.h"
 #include "gi/scene/builtin_scenes.h"
 #include "gi/scene/generators/generators.h"
 #include "gi/scene/scene_loader.h"
@@ -141,6 +142,10 @@ int runInfo(const ParsedArgs& args) {
     printRow("", lightingLine(loaded));
     printRow("image", std::to_string(loaded.image.width) + "x" + std::to_string(loaded.image.height) +
                           (args.common.size ? " (from --size)" : ""));
+    const std::vector<std::string> animation = scene::animationSummary(loaded);
+    for (size_t i = 0; i < animation.size(); ++i) {
+        printRow(i == 0 ? "animation" : "", animation[i]);
+    }
     printRow("technique", loaded.technique.empty() ? "(renderer default)" : loaded.technique);
     printRow("preset", loaded.preset.empty() ? "(renderer default)" : loaded.preset);
     printRow("load time", format(milliseconds) + " ms");
@@ -170,8 +175,8 @@ Command infoCommand() {
     }
     static const std::string description =
         "Loads SCENE and prints its triangle, vertex, mesh, instance, material, texture and light counts, "
-        "its "
-        "bounds, camera, units, sky, image size, GI technique and preset, the load time, the surface cache's "
+        "its bounds, camera, units, sky, image size, animation (tracks, what they move, loop length), GI "
+        "technique and preset, the load time, the surface cache's "
         "atlas occupancy and cards per level of detail from the scene camera, and every repair the "
         "loader made. SCENE is a built-in scene (" +
         builtins +
@@ -179,8 +184,9 @@ Command infoCommand() {
         "problem (exit code 1). docs/scenes.md describes scene files and units.";
     return {.name = "info",
             .summary = "load a scene and print what it holds",
-            .usage = "lumina info SCENE [--instances N] [--size WxH] [--preset P] [--no-default-light] [--sky "
-                     "FILE.exr [--sky-intensity K]]",
+            .usage =
+                "lumina info SCENE [--instances N] [--size WxH] [--preset P] [--no-default-light] [--sky "
+                "FILE.exr [--sky-intensity K]]",
             .description = description,
             .flags = withSceneLoadFlags(
                 {{"instances", "N", "building count of a generated city (default 1024)"},

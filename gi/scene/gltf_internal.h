@@ -48,7 +48,18 @@ uint32_t convertTexture(const Context& context, int textureIndex, const std::str
 // or -1 when it has no triangles. `defaultMaterial` is used by primitives without one.
 std::vector<int64_t> convertMeshes(const Context& context, Scene& scene, uint32_t defaultMaterial);
 
+// The glTF node that made each instance and each light, parallel to scene.instances and
+// scene.lights.
+struct NodeOrigins {
+    std::vector<int> instanceNode;
+    std::vector<int> lightNode;
+};
+
 // gltf_nodes.cpp: walks the default scene's node trees into instances, lights and cameras.
-void convertNodes(const Context& context, const std::vector<int64_t>& meshIndex, Scene& scene);
+NodeOrigins convertNodes(const Context& context, const std::vector<int64_t>& meshIndex, Scene& scene);
+
+// gltf_animation.cpp: the glTF's animations as scene.animation's node clips, bound to the
+// instances and lights under the animated nodes.
+void convertAnimations(const Context& context, const NodeOrigins& origins, Scene& scene);
 
 } // namespace lumina::scene::gltf

@@ -86,10 +86,6 @@ void checkVersionAndExtensions(const gltf::Context& context) {
             context.fail("requires extension " + name + ", which Lumina does not support");
         }
     }
-    if (!model.animations.empty()) {
-        context.warn(std::to_string(model.animations.size()) +
-                     " animation(s) ignored (the rest pose is drawn)");
-    }
 }
 
 // Drops meshes no instance draws, so counts describe the scene as drawn.
@@ -137,13 +133,15 @@ Scene convertModel(const tinygltf::Model& model, const fs::path& file, const Glt
     if (usesMaterial(scene, defaultMaterial)) {
         scene.materials.push_back(Material{.name = "default"});
     }
-    gltf::convertNodes(context, meshIndex, scene);
+    const gltf::NodeOrigins origins = gltf::convertNodes(context, meshIndex, scene);
+    gltf::convertAnimations(context, origins, scene);
     pruneUnusedMeshes(scene);
     if (scene.instances.empty()) {
         context.fail(
             std::string("the scene is empty: no node draws a triangle") +
             (scene.report.nonTrianglePrimitivesSkipped != 0 ? " (its points and lines are skipped)" : ""));
     }
+    animateScene(scene, 0); // a loaded scene shows its first frame
     finishCamera(scene);
     return scene;
 }

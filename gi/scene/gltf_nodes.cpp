@@ -209,8 +209,9 @@ std::vector<int> rootNodes(const Context& context) {
 
 } // namespace
 
-void convertNodes(const Context& context, const std::vector<int64_t>& meshIndex, Scene& scene) {
+NodeOrigins convertNodes(const Context& context, const std::vector<int64_t>& meshIndex, Scene& scene) {
     const tinygltf::Model& model = context.model;
+    NodeOrigins origins;
     struct Pending {
         int node;
         glm::dmat4 parentWorld;
@@ -257,6 +258,7 @@ void convertNodes(const Context& context, const std::vector<int64_t>& meshIndex,
                 context.fail(what + ": KHR_lights_punctual names a light that does not exist");
             }
             scene.lights.push_back(convertLight(context, size_t(index.GetNumberAsInt()), world));
+            origins.lightNode.push_back(pending.node);
         }
         if (node.mesh < 0) {
             continue;
@@ -285,7 +287,9 @@ void convertNodes(const Context& context, const std::vector<int64_t>& meshIndex,
             context.fail("more than " + std::to_string(kMaxInstances) + " mesh instances");
         }
         scene.instances.push_back(std::move(instance));
+        origins.instanceNode.push_back(pending.node);
     }
+    return origins;
 }
 
 } // namespace lumina::scene::gltf

@@ -6,6 +6,8 @@
 // Meshes hold geometry in object space; instances place a mesh in the world. A mesh may be
 // instanced many times (columns of the atrium, buildings of the city), so per-instance
 // counts (Scene::triangleCount) and per-mesh counts (Scene::meshTriangleCount) differ.
+#include "gi/scene/scene_animation.h"
+
 #include <cstdint>
 #include <filesystem>
 #include <glm/glm.hpp>
@@ -183,6 +185,10 @@ struct Scene {
     std::string preset;    // quality preset name; empty: the renderer's default
     Units units;
     LoadReport report;
+    // What moves and changes over time (scene_animation.h); animateScene(scene, frame) applies it.
+    // The loaders leave the scene at frame 0; the rest poses the tracks start from live in it.
+    SceneAnimation animation;
+    float framesPerSecond = 60.0f; // animation time = frame / framesPerSecond (scene file key)
 
     uint64_t triangleCount() const; // summed over instances: what is drawn
     uint64_t meshTriangleCount() const;

@@ -16,6 +16,9 @@ namespace {
 
 // Largest image side, as the CLI's --size accepts.
 constexpr uint32_t kMaxImageSide = 16384;
+// Animation frame rates accepted: a fixed step of at most a second, at least a tenth of a millisecond.
+constexpr double kMinFramesPerSecond = 1.0;
+constexpr double kMaxFramesPerSecond = 10000.0;
 
 glm::vec3 unitVector(const JsonObject& object, std::string_view key, const glm::vec3& v) {
     const float length = glm::length(v);
@@ -180,7 +183,8 @@ SceneFile parseSceneFileText(std::string_view text, const std::filesystem::path&
     }
     const JsonObject root(document, "", file,
                           {"description", "gltf", "generator", "instances", "metresPerUnit", "camera",
-                           "lights", "replaceLights", "sun", "sky", "image", "technique", "preset"});
+                           "lights", "replaceLights", "sun", "sky", "image", "technique", "preset",
+                           "framesPerSecond", "animation"});
     SceneFile out;
     out.file = file;
     out.description = root.string("description").value_or("");
@@ -196,8 +200,8 @@ SceneFile parseSceneFileText(std::string_view text, const std::filesystem::path&
         }
         out.gltf = file.parent_path() / std::filesystem::path(*gltf);
     } else {
-        if (*generator != "atrium" && *generator != "city") {
-            root.fail("generator", "must be atrium or city, not '" + *generator + "'");
+        if (*generator != "atrium" && *generator != "city" && *generator != "door") {
+            root.fail("generator", "must be atrium, city or door, not '" + *generator + "'");
         }
         out.generator = *generator;
     }
@@ -255,6 +259,17 @@ SceneFile parseSceneFileText(std::string_view text, const std::filesystem::path&
     if (const auto preset = root.string("preset")) {
         out.preset = identifier(root, "preset", *preset);
     }
+    if (const auto fps = root.number("framesPerSecond")) {
+        if (*fps < kMinFramesPerSecond || *fps > kMaxFramesPerSecond) {
+            root.fail("framesPerSecond", "must be in [" + std::to_string(int(kMinFramesPerSecond)) + ", " +
+                                             std::to_string(int(kMaxFramesPerSecond)) + "]");
+        }
+        out.framesPerSecond = float(*fps);
+    }
+    if (const nlohmann::json* animation = root.object("animation")) {
+        out.animation =
+            parseScriptedAnimation(*animation, out.framesPerSecond.value_or(Scene{}.framesPerSecond), file);
+    }
     return out;
 }
 
@@ -279,6 +294,10 @@ void applySceneFile(const SceneFile& sceneFile, Scene& scene) {
     }
     if (sceneFile.replaceLights) {
         scene.lights.clear();
+        scene.animation.nodeLights.clear(); // the glTF's animated lights are gone with them
+    }
+    if (sceneFile.framesPerSecond) {
+        scene.framesPerSecond = *sceneFile.framesPerSecond;
     }
     std::vector<Light> added = sceneFile.lights;
     if (sceneFile.sun) {
@@ -310,6 +329,9 @@ void applySceneFile(const SceneFile& sceneFile, Scene& scene) {
     }
     if (sceneFile.preset) {
         scene.preset = *sceneFile.preset;
+    }
+    if (sceneFile.animation) {
+        resolveScriptedAnimation(*sceneFile.animation, sceneFile.file, scene);
     }
     if (!sceneFile.camera) {
         return;

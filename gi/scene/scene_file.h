@@ -3,6 +3,7 @@
 // sun, sky, image size, GI technique and quality preset. docs/scenes.md is the schema; an
 // unknown key is an error naming the key and the file.
 #include "gi/scene/scene.h"
+#include "gi/scene/scene_file_animation.h"
 
 #include <filesystem>
 #include <optional>
@@ -26,7 +27,7 @@ struct SceneFile {
     std::filesystem::path file;
     std::string description;
     std::filesystem::path gltf;        // resolved against the scene file's folder; empty with a generator
-    std::string generator;             // "atrium" or "city"
+    std::string generator;             // "atrium", "city" or "door"
     std::optional<uint32_t> instances; // city only
     std::optional<double> metresPerUnit;
     std::optional<SceneFileCamera> camera;
@@ -39,6 +40,8 @@ struct SceneFile {
     std::optional<ImageSize> image;
     std::optional<std::string> technique;
     std::optional<std::string> preset;
+    std::optional<float> framesPerSecond;
+    std::optional<ScriptedAnimation> animation; // frame keys already in seconds
 };
 
 SceneFile parseSceneFile(const std::filesystem::path& file);

@@ -29,6 +29,9 @@ Scene generate(const SceneFile& sceneFile, const LoadOptions& options) {
     if (sceneFile.generator == "atrium") {
         return makeAtrium();
     }
+    if (sceneFile.generator == "door") {
+        return makeDoor();
+    }
     const uint32_t buildings =
         options.instances.value_or(sceneFile.instances.value_or(kCityDefaultBuildings));
     if (buildings < 1 || buildings > kCityMaxBuildings) {
@@ -74,6 +77,7 @@ Scene loadWithoutOptions(const fs::path& file, const std::string& extension, con
     }
     scene.name = file.stem().string();
     applySceneFile(sceneFile, scene);
+    animateScene(scene, 0); // a loaded scene shows its first frame
     finishCamera(scene);
     return scene;
 }

@@ -131,7 +131,7 @@ TEST(SceneFile, MistakesAreErrorsNamingTheKey) {
     } cases[] = {
         {R"({"metresPerUnit": 1})", "exactly one of 'gltf'"},
         {R"({"gltf": "a.gltf", "generator": "city"})", "exactly one of 'gltf'"},
-        {R"({"generator": "forest"})", "'generator' must be atrium or city"},
+        {R"({"generator": "forest"})", "'generator' must be atrium, city or door"},
         {R"({"generator": "atrium", "instances": 5})", "'instances' applies only"},
         {R"({"generator": "city", "instances": -5})", "'instances' must be a whole number"},
         {R"({"generator": "city", "instances": 0})", "'instances' must be a whole number"},

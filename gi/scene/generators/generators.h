@@ -1,7 +1,7 @@
 #pragma once
 // The code that makes Lumina's built-in scenes. The small ones (Cornell box, open-top box,
 // furnaces) are written once to scenes/<name>/ as glTF + scene file and loaded from there;
-// atrium and city are generated each time their scene file is loaded.
+// atrium, city and door are generated each time their scene file is loaded.
 #include "gi/scene/scene.h"
 
 #include <cstdint>
@@ -22,6 +22,12 @@ Scene makeFurnace(float albedo);
 
 // A courtyard with two storeys of arcades, columns, coloured drapes and a sun (metres).
 Scene makeAtrium();
+
+// Two rooms joined by a doorway, one lit by a lamp, the other (with the camera) dark, and a
+// door that scenes/door/door.json swings about doorHinge() (metres).
+Scene makeDoor();
+// A point on the door's hinge axis (vertical, through this point).
+glm::vec3 doorHinge();
 
 // A grid of `buildings` instanced buildings on a ground plane (metres).
 inline constexpr uint32_t kCityDefaultBuildings = 1024;

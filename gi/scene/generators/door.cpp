@@ -1,0 +1,107 @@
+// Two rooms side by side under one roof, joined by a doorway in the wall between them: the west
+// room (x < 0) is lit by a lamp, the east room (x > 0), where the camera stands, has no light of
+// its own. A door on the east side of the doorway, hinged at its south edge, closes it; the
+// scene file (scenes/door/door.json) swings it open about that hinge and back, so all the light
+// the camera sees arrives through the doorway, indirectly. Metres, y up.
+#include "gi/scene/generators/generators.h"
+#include "gi/scene/mesh_builder.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace lumina::scene {
+
+namespace {
+
+// Each room 4 m x 3 m high x 4 m; the wall between them is 0.2 m thick, centred on x = 0.
+constexpr float kRoomLength = 4.0f, kHeight = 3.0f, kHalfDepth = 2.0f, kHalfWall = 0.1f;
+// The doorway: 1 m wide (z in [-0.5, 0.5]), 2.1 m high.
+constexpr float kDoorwayHalfWidth = 0.5f, kDoorwayHeight = 2.1f;
+// The door: 4 cm thick, 1 cm off the east face of the wall, overlapping the doorway by 6 cm at
+// the sides and 5 cm at the top so that no straight ray slips past it when closed.
+constexpr float kDoorGap = 0.01f, kDoorThickness = 0.04f, kDoorOverlap = 0.06f, kDoorHeight = 2.15f;
+// The lamp (point light), in candela = scene intensity in metres (units.h): about 3.7 lux on
+// the floor below it.
+constexpr float kLampCandela = 25.0f;
+
+enum DoorMaterial : uint32_t { kPlaster, kFloor, kOchre, kWood };
+
+constexpr uint32_t kSkipBottom = 1u << 2, kSkipTop = 1u << 3, kSkipSouth = 1u << 4, kSkipNorth = 1u << 5;
+
+Mesh roomsMesh() {
+    MeshBuilder rooms("rooms");
+    rooms.material(kPlaster);
+    const glm::vec3 min(-kRoomLength - kHalfWall, 0.0f, -kHalfDepth),
+        max(kRoomLength + kHalfWall, kHeight, kHalfDepth);
+    // One shell around both rooms, facing in; its floor and the lit room's end wall get their
+    // own materials.
+    rooms.box(min, max, /*inward=*/true, /*skipFaces=*/(1u << 0) | kSkipBottom);
+    rooms.material(kFloor);
+    rooms.quad({min.x, 0.0f, min.z}, {min.x, 0.0f, max.z}, {max.x, 0.0f, max.z}, {max.x, 0.0f, min.z});
+    rooms.material(kOchre); // the lit room's far wall: the colour that bleeds through the door
+    rooms.quadFacingAwayFrom({min.x, 0.0f, min.z}, {min.x, 0.0f, max.z}, {min.x, kHeight, max.z},
+                             {min.x, kHeight, min.z}, {min.x - 1.0f, 0.5f * kHeight, 0.0f});
+    return rooms.finish();
+}
+
+// The wall between the rooms: two full-height pieces beside the doorway and a lintel above it,
+// without the faces that touch the shell or each other.
+Mesh dividingWallMesh() {
+    MeshBuilder wall("dividing wall");
+    wall.material(kPlaster);
+    wall.box({-kHalfWall, 0.0f, -kHalfDepth}, {kHalfWall, kHeight, -kDoorwayHalfWidth}, false,
+             kSkipBottom | kSkipTop | kSkipSouth);
+    wall.box({-kHalfWall, 0.0f, kDoorwayHalfWidth}, {kHalfWall, kHeight, kHalfDepth}, false,
+             kSkipBottom | kSkipTop | kSkipNorth);
+    wall.box({-kHalfWall, kDoorwayHeight, -kDoorwayHalfWidth}, {kHalfWall, kHeight, kDoorwayHalfWidth}, false,
+             kSkipTop | kSkipSouth | kSkipNorth);
+    return wall.finish();
+}
+
+Mesh doorMesh() {
+    MeshBuilder door("door");
+    door.material(kWood);
+    const float x0 = kHalfWall + kDoorGap, halfWidth = kDoorwayHalfWidth + kDoorOverlap;
+    door.box({x0, 0.0f, -halfWidth}, {x0 + kDoorThickness, kDoorHeight, halfWidth}, false, kSkipBottom);
+    return door.finish();
+}
+
+} // namespace
+
+glm::vec3 doorHinge() {
+    return {kHalfWall + kDoorGap + kDoorThickness, 0.0f, -(kDoorwayHalfWidth + kDoorOverlap)};
+}
+
+Scene makeDoor() {
+    Scene scene;
+    scene.name = "door";
+    scene.description = "a lit room and a dark one joined by a doorway; the door swings open and shut";
+    scene.materials = {
+        {.name = "plaster", .baseColor = {0.78f, 0.76f, 0.72f, 1.0f}},
+        {.name = "floor", .baseColor = {0.45f, 0.4f, 0.35f, 1.0f}},
+        {.name = "ochre", .baseColor = {0.8f, 0.5f, 0.15f, 1.0f}},
+        {.name = "wood", .baseColor = {0.5f, 0.32f, 0.18f, 1.0f}},
+    };
+    scene.meshes = {roomsMesh(), dividingWallMesh(), doorMesh()};
+    for (uint32_t i = 0; i < scene.meshes.size(); ++i) {
+        scene.instances.push_back({.mesh = i, .transform = glm::mat4(1.0f), .name = scene.meshes[i].name});
+    }
+    scene.lights.push_back({.type = LightType::Point,
+                            .name = "lamp",
+                            .intensity = kLampCandela,
+                            .position = {-0.5f * kRoomLength - kHalfWall, kHeight - 0.4f, 0.0f}});
+    // In the dark room's far corner, looking back at the doorway and the door's swing.
+    scene.camera = {.name = "camera",
+                    .position = {3.6f, 1.6f, 1.6f},
+                    .forward = glm::normalize(glm::vec3(0.1f, 1.0f, -0.3f) - glm::vec3(3.6f, 1.6f, 1.6f)),
+                    .fovY = glm::radians(60.0f),
+                    .nearPlane = 0.05f,
+                    .farPlane = 30.0f};
+    scene.camera.up = glm::normalize(
+        glm::cross(glm::cross(scene.camera.forward, glm::vec3(0.0f, 1.0f, 0.0f)), scene.camera.forward));
+    scene.cameraFromFile = true;
+    scene.sky = glm::vec3(0.0f);
+    scene.image = {960, 540};
+    return scene;
+}
+
+} // namespace lumina::scene
