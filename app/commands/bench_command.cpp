@@ -7,6 +7,7 @@
 #include "app/command.h"
 #include "app/commands/scene_options.h"
 #include "gi/bench/bench_report.h"
+#include "gi/bench/change_response.h"
 #include "gi/bench/reference_cache.h"
 #include "gi/bench/technique_runs.h"
 #include "gi/core/build_info.h"
@@ -138,6 +139,20 @@ bool makePlot(const std::filesystem::path& csv, const std::filesystem::path& png
     return true;
 }
 
+void printChangeResponse(const gi::ChangeResponse& r) {
+    std::cout << "  " << r.scene << " / " << r.technique << " / " << r.preset << ": after " << r.changeFrames
+              << " frames of change, relMSE " << number(r.relMseAtStop)
+              << " against a fresh converged render; ";
+    if (r.framesToRecover) {
+        std::cout << "within 0.01 after " << *r.framesToRecover << " frame(s) held still ("
+                  << number(r.msToRecover) << " GPU ms)";
+    } else {
+        std::cout << "not within 0.01 in " << r.relMseAfter.size() << "+ checkpoints";
+    }
+    std::cout << "; frame " << number(r.movingFrameMs) << " ms moving, " << number(r.staticFrameMs)
+              << " ms static\n";
+}
+
 int runBench(const ParsedArgs& args) {
     if (!args.positional.empty()) {
         throw UsageError("bench takes no positional arguments; name scenes with --scenes");
@@ -200,6 +215,8 @@ int runBench(const ParsedArgs& args) {
     gi::PipelineCache pipelines(*device, shaders);
 
     std::vector<gi::BenchRecord> records;
+    std::vector<gi::ChangeResponse> responses;
+    const auto changeFrames = uint32_t(args.getUint("change-frames", 0, 0, 1u << 20));
     for (const scene::Scene& scene : scenes) {
         const gi::ReferenceRequest request{.width = width, .height = height, .spp = referenceSpp};
         const gi::Reference reference = gi::loadOrRenderReference(
@@ -224,6 +241,12 @@ int runBench(const ParsedArgs& args) {
                                    reference.path.string()});
                 printRun(scene.name, records.back().run);
                 realTimeFrameMs[technique].push_back(records.back().run.frameMs);
+                if (changeFrames > 0 && !scene.animation.empty()) {
+                    responses.push_back(gi::measureChangeResponse(
+                        *device, pipelines, scene, gi::parseGiTechnique(technique), preset,
+                        {.width = width, .height = height, .changeFrames = changeFrames}));
+                    printChangeResponse(responses.back());
+                }
             }
         }
         if (contains(techniques, "pathtracer")) {
@@ -251,6 +274,11 @@ int runBench(const ParsedArgs& args) {
     gi::writeBenchCsv(csv, context, records);
     gi::writeBenchJson(json, context, records);
     std::cout << "wrote " << csv.string() << " and " << json.string() << '\n';
+    if (!responses.empty()) {
+        const std::filesystem::path changeCsv = outDir / "change_response.csv";
+        gi::writeChangeResponseCsv(changeCsv, responses);
+        std::cout << "wrote " << changeCsv.string() << '\n';
+    }
     if (!args.has("no-plot") && makePlot(csv, png)) {
         std::cout << "wrote " << png.string() << '\n';
     }
@@ -309,7 +337,11 @@ Command benchCommand() {
               "path-tracer frame budgets in multiples of lumen's frame, else direct's (default 1,4,16)"},
              {"reference-spp", "N", "samples per pixel of the references (default 256)"},
              {"cache", "DIR", "where references are kept (default $LUMINA_CACHE_DIR/references)"},
-             {"no-plot", "", "write the CSV and JSON only"}}),
+             {"no-plot", "", "write the CSV and JSON only"},
+             {"change-frames", "N",
+              "for animated scenes: play N frames of the animation, hold the pose, and measure the frames "
+              "and GPU ms until each real-time run is within relMSE 0.01 of a fresh converged render of that "
+              "pose, and the frame cost moving against static (DIR/change_response.csv)"}}),
         .run = runBench};
 }
 

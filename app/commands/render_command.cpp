@@ -14,9 +14,12 @@
 #include "gi/gpu_scene/gpu_scene.h"
 #include "gi/image/exr.h"
 #include "gi/image/png.h"
+#include "gi/scene/scene_animation.h"
 #include "gi/scene/scene_loader.h"
 #include "rhi/rhi.h"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -113,6 +116,15 @@ int runRender(const ParsedArgs& args) {
     if (args.common.size) {
         loaded.image = {args.common.size->width, args.common.size->height};
     }
+    // An animated scene plays its animation (docs/dynamic_scenes.md) unless --animation-frame poses
+    // it at one frame and holds it still.
+    const bool animated = !loaded.animation.empty() && !args.has("animation-frame");
+    if (args.has("animation-frame")) {
+        if (loaded.animation.empty()) {
+            throw UsageError("--animation-frame: scene '" + loaded.name + "' has no animation");
+        }
+        scene::animateScene(loaded, args.getUint("animation-frame", 0, 0, UINT32_MAX));
+    }
     const std::filesystem::path out = args.common.out.empty() ? loaded.name + ".png" : args.common.out;
     // A name ending in .exr asks for the linear image; writing a PNG under that name (as this
     // once did) leaves a file every EXR reader rejects.
@@ -139,11 +151,17 @@ int runRender(const ParsedArgs& args) {
 
     gi::FrameRendererSettings settings = rendererSettings(args, loaded, exposure);
     const bool lumen = settings.technique == gi::GiTechnique::Lumen;
-    // Direct light is final after one frame; lumen converges (see kProbeSettleFrames).
-    const bool converge = lumen && !args.common.frames;
-    const uint32_t frames = args.common.frames.value_or(converge  ? kMaxConvergeFrames
-                                                        : timings ? kTimingFrames
-                                                                  : 1u);
+    // Direct light is final after one frame; lumen converges (see kProbeSettleFrames). An animation
+    // plays once through unless --frames says how long.
+    const bool converge = lumen && !args.common.frames && !animated;
+    const uint32_t loopFrames =
+        animated ? std::max<uint32_t>(
+                       1u, uint32_t(std::ceil(loaded.animation.length() * double(loaded.framesPerSecond))))
+                 : 1u;
+    const uint32_t frames = args.common.frames.value_or(converge   ? kMaxConvergeFrames
+                                                        : animated ? loopFrames
+                                                        : timings  ? kTimingFrames
+                                                                   : 1u);
     const auto warmup = static_cast<uint32_t>(args.getUint("warmup", 0, 0, frames - 1));
     std::cout << "technique: " << gi::giTechniqueName(settings.technique);
     if (lumen) {
@@ -168,10 +186,23 @@ int runRender(const ParsedArgs& args) {
     rhi::IQueue& queue = device->queue(rhi::QueueType::Graphics);
     uint32_t settledAt = 0; // the frame after which the surface cache had converged; 0: not yet
     uint32_t rendered = 0;
+    scene::Scene posed = animated ? loaded : scene::Scene{};
+    gi::SceneChangeStats changes;
+    uint32_t changedFrames = 0;
     for (uint32_t frameIndex = 0; frameIndex < frames; ++frameIndex) {
+        if (animated) {
+            scene::animateScene(posed, frameIndex);
+            renderer.applyScene(posed);
+        }
         list->begin();
         gi::FrameContext frame(pipelines, *list, frameIndex);
         renderer.render(frame);
+        if (renderer.lastChanges().any()) {
+            ++changedFrames;
+            changes.movedInstances += renderer.lastChanges().movedInstances;
+            changes.changedLights += renderer.lastChanges().changedLights;
+            changes.changedMaterials += renderer.lastChanges().changedMaterials;
+        }
         list->end();
         queue.waitForValue(queue.submit(*list));
         table.addFrame(list->timerResults(), frame.skipped());
@@ -186,6 +217,13 @@ int runRender(const ParsedArgs& args) {
         if (converge && settledAt != 0 && rendered >= settledAt + kProbeSettleFrames) {
             break;
         }
+    }
+    if (animated) {
+        std::cout << "animation: " << rendered << " frame(s) played (a loop is " << loopFrames << " at "
+                  << loaded.framesPerSecond << " frames/s); " << changedFrames
+                  << " frame(s) changed the scene: " << changes.movedInstances << " instance move(s), "
+                  << changes.changedLights << " light change(s), " << changes.changedMaterials
+                  << " emission change(s)\n";
     }
     if (lumen) {
         std::cout << "frames: " << rendered << " (surface cache "
@@ -269,7 +307,10 @@ Command renderCommand() {
             "card outlines and ids, radiosity probes, voxel lighting, every screen-probe buffer) as EXR "
             "and PNG. --timings prints the median GPU time of each pass from timestamp queries and how "
             "often each pass was skipped and why (shadow maps and surface-cache passes run only when "
-            "something they read changed).",
+            "something they read changed). A scene with an animation (glTF channels or scripted changes, "
+            "docs/scenes.md) plays it, one loop unless --frames, and only what each frame changed is "
+            "recomputed (docs/dynamic_scenes.md); --animation-frame F renders the pose at frame F "
+            "still, converged like a static scene.",
         .flags = withSceneLoadFlags(
             {{"technique", "NAME", "GI technique: direct (none) or lumen (default: the scene's, else lumen)"},
              {"preset", "NAME",
@@ -284,7 +325,10 @@ Command renderCommand() {
              {"timings", "", "print the GPU time per pass (direct: 60 frames unless --frames)"},
              {"timings-json", "PATH", "write the per-pass timings as JSON"},
              {"warmup", "N", "frames left out of the timings (default 0)"},
-             {"exposure", "EV", "exposure in stops before the tonemap (default 0)"}}),
+             {"exposure", "EV", "exposure in stops before the tonemap (default 0)"},
+             {"animation-frame", "F",
+              "pose an animated scene at frame F and hold it still (default: play the animation, one loop "
+              "unless --frames)"}}),
         .run = runRender};
 }
 

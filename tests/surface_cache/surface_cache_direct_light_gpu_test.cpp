@@ -59,7 +59,7 @@ TEST_P(SurfaceCacheDirectLightGpu, AFloorUnderAPointLightGetsTheLambertIrradianc
     EXPECT_EQ(skipReason(skipped, SurfaceCacheDirectLightPass::kPassName), "");
     // One more update: combine reads this update's direct light, the next one the bounce.
     skipped = h.update(lit);
-    EXPECT_EQ(skipReason(skipped, SurfaceCacheDirectLightPass::kPassName), "no light or card changed");
+    EXPECT_EQ(skipReason(skipped, SurfaceCacheDirectLightPass::kPassName), "no light, shadow or card changed");
 
     const std::vector<glm::vec4> direct = h.cache.readLayer(AtlasLayer::DirectLight);
     const std::vector<glm::vec4> final = h.cache.readLayer(AtlasLayer::FinalLighting);
@@ -151,7 +151,7 @@ TEST_P(SurfaceCacheDirectLightGpu, RelightsOnlyWhenALightOrCardChanges) {
     };
     EXPECT_EQ(skipReason(h.update(), SurfaceCacheDirectLightPass::kPassName), "no lights given");
     EXPECT_EQ(skipReason(h.update(lit), SurfaceCacheDirectLightPass::kPassName), "");
-    EXPECT_EQ(skipReason(h.update(lit), SurfaceCacheDirectLightPass::kPassName), "no light or card changed");
+    EXPECT_EQ(skipReason(h.update(lit), SurfaceCacheDirectLightPass::kPassName), "no light, shadow or card changed");
     const float before = h.cache.readLayer(AtlasLayer::DirectLight)[64 * 128 / 2 + 32].r;
 
     // Twice the intensity: relit, twice the irradiance.
@@ -161,7 +161,7 @@ TEST_P(SurfaceCacheDirectLightGpu, RelightsOnlyWhenALightOrCardChanges) {
     EXPECT_EQ(skipReason(h.update(lit), SurfaceCacheDirectLightPass::kPassName), "");
     const float after = h.cache.readLayer(AtlasLayer::DirectLight)[64 * 128 / 2 + 32].r;
     EXPECT_NEAR(after, 2.0f * before, 2e-3f * after);
-    EXPECT_EQ(skipReason(h.update(lit), SurfaceCacheDirectLightPass::kPassName), "no light or card changed");
+    EXPECT_EQ(skipReason(h.update(lit), SurfaceCacheDirectLightPass::kPassName), "no light, shadow or card changed");
 }
 
 LUMINA_INSTANTIATE_GPU_TEST(SurfaceCacheDirectLightGpu);

@@ -1,0 +1,162 @@
+#include "gi/bench/change_response.h"
+
+#include "gi/core/frame_context.h"
+#include "gi/core/timing_table.h"
+#include "gi/deferred/buffer_readback.h"
+#include "gi/frame/frame_renderer.h"
+#include "gi/frame/preset.h"
+#include "gi/gpu_scene/gpu_scene.h"
+#include "gi/measure/metrics.h"
+#include "gi/scene/scene_animation.h"
+
+#include <fstream>
+#include <stdexcept>
+
+namespace lumina::gi {
+
+namespace {
+
+// Frames a converged renderer keeps running after its surface cache settled, so the screen
+// probes' temporal filters settle too (as `lumina render` does).
+constexpr uint32_t kSettleFrames = 32;
+
+FrameRendererSettings settingsFor(const scene::Scene& scene, GiTechnique technique, const std::string& preset,
+                                  const ChangeResponseRequest& request) {
+    const Preset& p = findPreset(preset);
+    FrameRendererSettings settings;
+    settings.technique = technique;
+    settings.deferred = {.width = request.width,
+                         .height = request.height,
+                         .sunShadowSize = p.sunShadowSize,
+                         .pointShadowSize = p.pointShadowSize,
+                         .log = [](std::string_view) {}};
+    if (technique == GiTechnique::Lumen) {
+        settings.lumen = lumenPreset(p, scene);
+    }
+    return settings;
+}
+
+// One frame through `renderer`, submitted and waited for; returns its GPU milliseconds.
+double renderFrame(rhi::IDevice& device, PipelineCache& pipelines, rhi::ICommandList& list,
+                   FrameRenderer& renderer, uint32_t frameIndex) {
+    list.begin();
+    FrameContext frame(pipelines, list, frameIndex);
+    renderer.render(frame);
+    list.end();
+    rhi::IQueue& queue = device.queue(rhi::QueueType::Graphics);
+    queue.waitForValue(queue.submit(list));
+    double ms = 0.0;
+    for (const rhi::TimerResult& timer : list.timerResults()) {
+        ms += timer.milliseconds;
+    }
+    return ms;
+}
+
+image::Image hdrOf(rhi::IDevice& device, const FrameRenderer& renderer) {
+    image::Image image = readTextureImage(device, *renderer.deferred().hdr());
+    image.removeChannel("A");
+    return image;
+}
+
+} // namespace
+
+ChangeResponse measureChangeResponse(rhi::IDevice& device, PipelineCache& pipelines,
+                                     const scene::Scene& scene, GiTechnique technique,
+                                     const std::string& preset, const ChangeResponseRequest& request) {
+    if (scene.animation.empty()) {
+        throw std::invalid_argument("change response: scene '" + scene.name + "' has no animation");
+    }
+    if (request.width == 0 || request.height == 0 || request.changeFrames == 0) {
+        throw std::invalid_argument("change response: the size and the frames of change must not be zero");
+    }
+    ChangeResponse result{.scene = scene.name,
+                          .technique = giTechniqueName(technique),
+                          .preset = preset,
+                          .width = request.width,
+                          .height = request.height,
+                          .changeFrames = request.changeFrames,
+                          .relMseAfter = {},
+                          .framesToRecover = std::nullopt};
+    rhi::CommandListHandle list = device.createCommandList();
+
+    // The fresh renderer: built at the held pose, run until its surface cache settled.
+    scene::Scene held = scene;
+    scene::animateScene(held, request.changeFrames - 1);
+    image::Image reference;
+    {
+        GpuScene gpuScene(device, held);
+        FrameRenderer fresh(device, held, gpuScene, settingsFor(held, technique, preset, request));
+        std::optional<uint32_t> settledAt;
+        std::vector<double> staticMs;
+        for (uint32_t f = 0; f < request.maxReferenceFrames; ++f) {
+            const double ms = renderFrame(device, pipelines, *list, fresh, f);
+            const LumenGi* lumen = fresh.lumen();
+            if (!settledAt && (lumen == nullptr || lumen->surfaceCache().settled())) {
+                settledAt = f;
+            } else if (settledAt) {
+                staticMs.push_back(ms);
+            }
+            result.referenceFrames = f + 1;
+            if (settledAt && f >= *settledAt + kSettleFrames) {
+                break;
+            }
+        }
+        result.staticFrameMs = median(staticMs);
+        reference = hdrOf(device, fresh);
+    }
+
+    // The renderer under test: the animation plays, then the pose is held.
+    GpuScene gpuScene(device, scene);
+    FrameRenderer renderer(device, scene, gpuScene, settingsFor(scene, technique, preset, request));
+    scene::Scene posed = scene;
+    std::vector<double> movingMs;
+    for (uint32_t f = 0; f < request.changeFrames; ++f) {
+        scene::animateScene(posed, f);
+        renderer.applyScene(posed);
+        const double ms = renderFrame(device, pipelines, *list, renderer, f);
+        if (renderer.lastChanges().any()) {
+            movingMs.push_back(ms);
+        }
+    }
+    result.movingFrameMs = median(movingMs);
+    result.relMseAtStop = measure::relMse(reference, hdrOf(device, renderer));
+    uint32_t nextReport = 1;
+    for (uint32_t k = 1; k <= request.maxRecoveryFrames; ++k) {
+        result.msToRecover += renderFrame(device, pipelines, *list, renderer, request.changeFrames + k - 1);
+        const double error = measure::relMse(reference, hdrOf(device, renderer));
+        if (k == nextReport) {
+            result.relMseAfter.push_back(error);
+            nextReport *= 2;
+        }
+        if (error <= request.tolerance) {
+            result.framesToRecover = k;
+            break;
+        }
+    }
+    if (!result.framesToRecover) {
+        result.msToRecover = 0.0;
+    }
+    return result;
+}
+
+void writeChangeResponseCsv(const std::filesystem::path& path, const std::vector<ChangeResponse>& rows) {
+    std::ofstream out(path);
+    if (!out) {
+        throw std::runtime_error("cannot write " + path.string());
+    }
+    out << "scene,technique,preset,width,height,change_frames,moving_frame_ms,static_frame_ms,relmse_at_stop,"
+           "frames_to_recover,ms_to_recover,relmse_after_1_2_4_8\n";
+    for (const ChangeResponse& r : rows) {
+        out << r.scene << ',' << r.technique << ',' << r.preset << ',' << r.width << ',' << r.height << ','
+            << r.changeFrames << ',' << r.movingFrameMs << ',' << r.staticFrameMs << ',' << r.relMseAtStop
+            << ','
+            << (r.framesToRecover ? std::to_string(*r.framesToRecover) : std::string("not within limit"))
+            << ',' << r.msToRecover << ',';
+        for (size_t i = 0; i < r.relMseAfter.size(); ++i) {
+            out << (i ? " " : "") << r.relMseAfter[i];
+        }
+        out << '\n';
+    }
+}
+
+} // namespace lumina::gi
