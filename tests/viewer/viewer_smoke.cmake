@@ -47,13 +47,28 @@ if(ERR MATCHES "validation")
 endif()
 
 # Every debug view once, on a scene with a point light (cube shadow maps), under validation, while
-# the technique is switched to direct and back to lumen (preset low) and the light is edited.
-viewer(0 views cornell_box_point --size 32x32 --validation --cycle-views --test-edits --frames 30)
+# the technique is switched to direct and back to lumen (preset low) and the light is edited. The
+# last rebuild is at frame 6; from there --cycle-views shows view (frame mod views) each frame,
+# so 6 + VIEW_FRAMES frames show every view of the lumen renderer at least once.
+set(VIEW_FRAMES 42)
+math(EXPR frames "6 + ${VIEW_FRAMES}")
+viewer(0 views cornell_box_point --size 32x32 --validation --cycle-views --test-edits --frames ${frames})
 expect_match(views "${OUT}" "renderer rebuilt: direct.*renderer rebuilt: lumen, preset low")
 string(REGEX MATCH "views: ([0-9]+)" _ "${OUT}")
-if(NOT CMAKE_MATCH_1 OR CMAKE_MATCH_1 GREATER 30)
-  message(FATAL_ERROR "[views] expected at most 30 views, got '${CMAKE_MATCH_1}'")
+if(NOT CMAKE_MATCH_1 OR CMAKE_MATCH_1 GREATER VIEW_FRAMES)
+  message(FATAL_ERROR "[views] expected at most ${VIEW_FRAMES} views, got '${CMAKE_MATCH_1}'")
 endif()
+# The GI views of the lumen renderer, each shown (printed as "view: NAME" when it is).
+foreach(name "sdf: global SDF slice" "sdf: traced normals, near field" "sdf: traced normals, far field"
+             "sdf: traced normals, cone" "surface cache: card outlines over the final image"
+             "surface cache: card outlines over the atlas albedo"
+             "surface cache: card outlines over the atlas final lighting"
+             "surface cache: radiosity probes, irradiance \\(filtered\\)"
+             "surface cache: radiosity probes, irradiance \\(traced\\)" "surface cache: radiosity probes, normal"
+             "surface cache: voxel lighting slice" "screen probes: ray directions"
+             "screen probes: SH radiance \\(the low-pass\\)" "shadows: first point light, face -z")
+  expect_match(views "${OUT}" "view: ${name}\n")
+endforeach()
 if(ERR MATCHES "validation")
   message(FATAL_ERROR "[views] validation messages:\n${ERR}")
 endif()
