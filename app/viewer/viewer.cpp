@@ -72,11 +72,8 @@ Viewer::Viewer(rhi::IDevice& device, const ViewerOptions& options, scene::Scene 
                                           .framesInFlight = options.framesInFlight});
     resizeIfNeeded();
     memory_.viewer = allocated(device_) - beforeViewer;
-    if (!options.view.empty()) {
-        selectView(options.view);
-    }
+    pendingView_ = options.view; // chosen once the first frame has completed the list
     startHotReload();
-    std::cout << "views: " << state_.views.size() << " (the final image and every buffer of the view menu)\n";
     inFlight_.resize(options.framesInFlight);
     for (InFlight& slot : inFlight_) {
         slot.commands = device_.createCommandList();
@@ -124,7 +121,7 @@ void Viewer::startHotReload() {
         pipelines_ = std::make_unique<gi::PipelineCache>(device_, *shaders_);
         compiler->sourceRoot = hotReloadTest_->sources();
         compiler->outputRoot = hotReloadTest_->spirv();
-        selectView(HotReloadTest::kView);
+        pendingView_ = HotReloadTest::kView;
     }
     if (compiler) {
         std::cout << "hot reload: watching " << compiler->sourceRoot.string() << '\n';
@@ -158,13 +155,35 @@ void Viewer::buildRenderer() {
     memory_.renderer = allocated(device_) - before;
     memory_.lumen = renderer_->lumen() ? renderer_->lumen()->memory() : gi::LumenMemory{};
     renderer_->setCamera(camera_.camera());
+    listViews();
+    viewsComplete_ = false;
+}
+
+// The renderer's buffers as the view menu; the same buffer stays on screen when the list still
+// has it. Some exist only once a frame has run (the shadow maps of the lights found then), so
+// the list is made again after a new renderer's first frame.
+void Viewer::listViews() {
     const std::string current = state_.view < state_.views.size() ? state_.views[state_.view].name : "";
     state_.views = listBufferViews(*renderer_, sceneDiagonal_);
     state_.view = 0;
     for (size_t i = 0; i < state_.views.size(); ++i) {
         if (state_.views[i].name == current) {
-            state_.view = i; // the same buffer stays on screen when the new renderer has it
+            state_.view = i;
         }
+    }
+}
+
+void Viewer::completeViews() {
+    listViews();
+    viewsComplete_ = true;
+    if (!pendingView_.empty()) {
+        selectView(pendingView_);
+        pendingView_.clear();
+    }
+    if (!viewsPrinted_) {
+        std::cout << "views: " << state_.views.size()
+                  << " (the final image and every buffer of the view menu)\n";
+        viewsPrinted_ = true;
     }
 }
 
@@ -306,8 +325,9 @@ void Viewer::scriptedWindowSteps(uint64_t frame) {
 }
 
 // --test-edits: what a user does in the panels, scripted: the technique switched to direct and
-// back to lumen with another preset (each a renderer rebuild), and the first light made brighter
-// and moved, so those paths run under validation.
+// back to lumen with another preset (each a renderer rebuild), the first light made brighter
+// and moved, and the slice views' axis set to x and then y (through the scene's middle), so
+// those paths run under validation.
 void Viewer::scriptedEdits(uint64_t frame) {
     switch (frame) {
     case 3:
@@ -328,6 +348,16 @@ void Viewer::scriptedEdits(uint64_t frame) {
             state_.lightsChanged = true;
         }
         break;
+    case 12:
+    case 24: {
+        const uint32_t axis = frame == 12 ? LUMINA_VISUALISE_AXIS_X : LUMINA_VISUALISE_AXIS_Y;
+        state_.slice.axis = axis;
+        state_.slice.position =
+            sceneBounds_.empty() ? 0.0f : 0.5f * (sceneBounds_.min[axis] + sceneBounds_.max[axis]);
+        std::cout << "slice axis: "
+                  << "xyz"[axis] << std::endl;
+        break;
+    }
     default:
         break;
     }
@@ -441,6 +471,9 @@ int Viewer::run() {
 
         slot.commands->begin();
         recordFrame(*slot.commands, frame, slot.skipped);
+        if (!viewsComplete_) {
+            completeViews();
+        }
         slot.commands->end();
         slot.fenceValue = queue.submit(*slot.commands);
         if (backbuffer_ && swapchain_->present(*backbuffer_) == rhi::PresentResult::Suboptimal) {

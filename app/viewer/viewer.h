@@ -80,6 +80,8 @@ private:
     void reloadShaders();
     void startHotReload();
     void selectView(const std::string& name);
+    void listViews();
+    void completeViews();
 
     rhi::IDevice& device_;
     ViewerOptions options_;
@@ -97,6 +99,9 @@ private:
     std::unique_ptr<ShaderHotReload> hotReload_;
     uint32_t reloads_ = 0; // kernel reloads so far
     std::unique_ptr<HotReloadTest> hotReloadTest_;
+    bool viewsComplete_ = false; // listed after the renderer's first frame
+    bool viewsPrinted_ = false;
+    std::string pendingView_; // --view, chosen once the list is complete
     std::unique_ptr<gi::GpuScene> gpuScene_;
     std::unique_ptr<gi::FrameRenderer> renderer_;
     FlyCamera camera_;

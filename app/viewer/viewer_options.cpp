@@ -27,7 +27,9 @@ const std::vector<FlagSpec>& viewerFlags() {
         {"no-hot-reload", "",
          "do not recompile a kernel when its HLSL file is saved (SPIR-V builds with glslang)"},
         {"test-resize", "", "resize, minimise and restore the window during the first frames (tests)"},
-        {"test-edits", "", "switch technique and preset and edit a light during the first frames (tests)"},
+        {"test-edits", "",
+         "switch technique and preset, edit a light and turn the slice views' axis during the first "
+         "frames (tests)"},
         {"cycle-views", "", "show the next debug view every frame (tests: every view once)"},
         {"test-hot-reload", "DIR",
          "edit a copy of the kernels under DIR while running and check each edit is reloaded, and a "

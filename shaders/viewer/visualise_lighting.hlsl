@@ -57,6 +57,7 @@ void voxelSlice(uint3 id : SV_DispatchThreadID) {
     const float3 box = gVisualise.sliceMax.xyz - gVisualise.sliceMin.xyz;
     const uint3 voxel = min(uint3(max((p - gVisualise.sliceMin.xyz) / box, 0.0) * float(dims)), dims - 1u);
     const float4 texel = gVoxelLighting.Load(int4(face * dims + voxel.x, voxel.y, voxel.z, 0));
-    const float3 color = texel.a > 0.0 ? display(float4(texel.rgb, 1.0)) : LUMINA_EMPTY_VOXEL.xxx;
+    const float3 empty = float3(LUMINA_EMPTY_VOXEL, LUMINA_EMPTY_VOXEL, LUMINA_EMPTY_VOXEL);
+    const float3 color = texel.a > 0.0 ? display(float4(texel.rgb, 1.0)) : empty;
     gOutput[id.xy] = float4(color, 1.0);
 }

@@ -49,11 +49,13 @@ endif()
 # Every debug view once, on a scene with a point light (cube shadow maps), under validation, while
 # the technique is switched to direct and back to lumen (preset low) and the light is edited. The
 # last rebuild is at frame 6; from there --cycle-views shows view (frame mod views) each frame,
-# so 6 + VIEW_FRAMES frames show every view of the lumen renderer at least once.
-set(VIEW_FRAMES 42)
+# so 6 + VIEW_FRAMES frames show every view of the lumen renderer at least once. The slice views
+# are turned to the x axis at frame 12 and to y at frame 24.
+set(VIEW_FRAMES 44)
 math(EXPR frames "6 + ${VIEW_FRAMES}")
 viewer(0 views cornell_box_point --size 32x32 --validation --cycle-views --test-edits --frames ${frames})
 expect_match(views "${OUT}" "renderer rebuilt: direct.*renderer rebuilt: lumen, preset low")
+expect_match(views "${OUT}" "slice axis: x.*slice axis: y")
 string(REGEX MATCH "views: ([0-9]+)" _ "${OUT}")
 if(NOT CMAKE_MATCH_1 OR CMAKE_MATCH_1 GREATER VIEW_FRAMES)
   message(FATAL_ERROR "[views] expected at most ${VIEW_FRAMES} views, got '${CMAKE_MATCH_1}'")
