@@ -3,8 +3,8 @@
 // renderer composed this frame, cut by a plane across one axis, colour-mapped as `lumina sdf
 // --slice-png` maps its slice (gi/sdf/sdf_views.h): magma over [-maxDistance, maxDistance], dark
 // inside and bright far outside, white within half a voxel of a surface, a darker line every two
-// voxels of distance. Each texel samples the cascade trilinearly (sdfSampleCascade), so the
-// image is finer than the voxels and the level lines stay smooth.
+// voxels of distance (none where the field is truncated). Each texel samples the cascade
+// trilinearly (sdfSampleCascade), so the image is finer than the voxels and the lines stay smooth.
 #include "sdf/sdf_scene_bindings.hlsli"
 #include "viewer/visualise_common.hlsli"
 
@@ -40,8 +40,10 @@ void main(uint3 id : SV_DispatchThreadID) {
     const float inVoxels = abs(d) / voxel;
     if (inVoxels < 0.5) {
         color = float3(1.0, 1.0, 1.0);
-    } else if (fmod(inVoxels, LUMINA_SLICE_LEVEL_SPACING_VOXELS) <
-               LUMINA_SLICE_LEVEL_LINE * LUMINA_SLICE_LEVEL_SPACING_VOXELS) {
+    } else if (abs(d) < maxDistance - 0.5 * voxel &&
+               fmod(inVoxels, LUMINA_SLICE_LEVEL_SPACING_VOXELS) <
+                   LUMINA_SLICE_LEVEL_LINE * LUMINA_SLICE_LEVEL_SPACING_VOXELS) {
+        // No lines where the distance is truncated: the field is flat there.
         color *= 0.6;
     }
     gOutput[id.xy] = float4(color, 1.0);
