@@ -1,5 +1,6 @@
 #include "app/viewer/hot_reload_test.h"
 
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <sstream>
