@@ -1,11 +1,12 @@
 # lumina-viewer under a virtual X display (xvfb-run) on lavapipe, run with cmake -P:
 #   VIEWER, LUMINA: the executables; WORK: a scratch folder.
-# 1. flags: --help exits 0 and lists the keys; bad flags exit 2 with the problem named.
+# 1. flags: --help exits 0 and lists the keys; bad flags, and a --view the technique does not
+#    have, exit 2 with the problem named.
 # 2. cornell_box at 96x96 with the validation layer (synchronization validation on): the window
 #    is resized, minimised and restored while it renders (--test-resize), and after FRAMES
 #    frames the viewer writes the frame as EXR and exits 0. Any validation message exits 1.
 #    Then every debug view of the view menu once, one per frame (--cycle-views), with the
-#    technique, preset and a light changed on the way (--test-edits).
+#    technique, preset, a light and the slice axis changed on the way (--test-edits).
 # 3. `lumina render` of the same scene, size and frame count writes the same view; the two
 #    EXRs must agree within relMSE 1e-4 (the viewer renders exactly the frames `lumina render`
 #    does, plus its own passes after the composite; measured on lavapipe: relMSE 0).
@@ -36,6 +37,11 @@ expect_match(screenshot-needs-path "${ERR}" "--screenshot-after needs two values
 viewer(2 not-a-viewer-flag cornell_box --seed 3)
 expect_match(not-a-viewer-flag "${ERR}" "--seed is not a lumina-viewer flag")
 viewer(2 bad-frames-in-flight cornell_box --frames-in-flight 5)
+viewer(2 hot-reload-test-without-hot-reload cornell_box --test-hot-reload "${WORK}/x" --no-hot-reload)
+expect_match(hot-reload-test-without-hot-reload "${ERR}" "--test-hot-reload .*cannot run with --no-hot-reload")
+# A view name is checked against the list the first frame completes (direct: no GI views).
+viewer(2 no-such-view cornell_box --size 16x16 --technique direct --view "sdf: global SDF slice" --frames 3)
+expect_match(no-such-view "${ERR}" "--view 'sdf: global SDF slice': no such view for this technique")
 
 viewer(0 render cornell_box --size ${SIZE} --validation --test-resize --screenshot-after ${FRAMES}
        "${WORK}/viewer.exr")
