@@ -8,7 +8,7 @@
 
 namespace lumina::app::viewer {
 
-void writeScreenshot(rhi::IDevice& device, const gi::FrameRenderer& renderer,
+void writeScreenshot(rhi::IDevice& device, const gi::FrameRenderer& renderer, rhi::ITexture& shown,
                      const std::filesystem::path& path) {
     if (path.has_parent_path()) {
         std::filesystem::create_directories(path.parent_path());
@@ -18,8 +18,7 @@ void writeScreenshot(rhi::IDevice& device, const gi::FrameRenderer& renderer,
         hdr.removeChannel("A");
         image::writeExr(path, hdr);
     } else if (path.extension() == ".png") {
-        image::writeDisplayPng(path,
-                               gi::displayImage(gi::readTextureImage(device, *renderer.deferred().ldr())));
+        image::writeDisplayPng(path, gi::displayImage(gi::readTextureImage(device, shown)));
     } else {
         throw std::invalid_argument("screenshot " + path.string() + ": the name must end in .png or .exr");
     }

@@ -2,6 +2,7 @@
 
 #include "app/cli.h"
 #include "app/viewer/screenshot.h"
+#include "rhi/transfer.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -40,8 +41,9 @@ Viewer::Viewer(rhi::IDevice& device, const ViewerOptions& options, scene::Scene 
       shaders_(std::make_unique<rhi::ShaderLibrary>(device)),
       pipelines_(std::make_unique<gi::PipelineCache>(device, *shaders_)),
       camera_(scene_.camera, scene_.worldBounds()) {
-    const scene::Bounds bounds = scene_.worldBounds();
-    sceneDiagonal_ = bounds.empty() ? 1.0f : glm::length(bounds.max - bounds.min);
+    sceneBounds_ = scene_.worldBounds();
+    sceneDiagonal_ = sceneBounds_.empty() ? 1.0f : glm::length(sceneBounds_.max - sceneBounds_.min);
+    state_.slice.position = sceneBounds_.empty() ? 0.0f : 0.5f * (sceneBounds_.min.z + sceneBounds_.max.z);
     state_.technique = options.technique.empty()
                            ? (scene_.technique.empty() ? gi::kDefaultTechnique : scene_.technique)
                            : options.technique;
@@ -70,26 +72,8 @@ Viewer::Viewer(rhi::IDevice& device, const ViewerOptions& options, scene::Scene 
                                           .framesInFlight = options.framesInFlight});
     resizeIfNeeded();
     memory_.viewer = allocated(device_) - beforeViewer;
-    if (!options.view.empty()) {
-        const auto it = std::find_if(state_.views.begin(), state_.views.end(),
-                                     [&](const BufferView& view) { return view.name == options.view; });
-        if (it == state_.views.end()) {
-            std::string names;
-            for (const BufferView& view : state_.views) {
-                names += "\n  " + view.name;
-            }
-            throw UsageError("--view '" + options.view +
-                             "': no such view for this technique; the views are:" + names);
-        }
-        state_.view = size_t(it - state_.views.begin());
-    }
-    if (options.hotReload && device_.capabilities().shaderFormat == rhi::ShaderFormat::Spirv) {
-        if (auto compiler = buildKernelCompiler(shaders_->directory())) {
-            std::cout << "hot reload: watching " << compiler->sourceRoot.string() << '\n';
-            hotReload_ = std::make_unique<ShaderHotReload>(std::move(*compiler));
-        }
-    }
-    std::cout << "views: " << state_.views.size() << " (the final image and every buffer of the view menu)\n";
+    pendingView_ = options.view; // chosen once the first frame has completed the list
+    startHotReload();
     inFlight_.resize(options.framesInFlight);
     for (InFlight& slot : inFlight_) {
         slot.commands = device_.createCommandList();
@@ -101,6 +85,48 @@ Viewer::~Viewer() {
     ui_.reset();
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();
+}
+
+void Viewer::selectView(const std::string& name) {
+    const auto it = std::find_if(state_.views.begin(), state_.views.end(),
+                                 [&](const BufferView& view) { return view.name == name; });
+    if (it == state_.views.end()) {
+        std::string names;
+        for (const BufferView& view : state_.views) {
+            names += "\n  " + view.name;
+        }
+        throw UsageError("--view '" + name + "': no such view for this technique; the views are:" + names);
+    }
+    state_.view = size_t(it - state_.views.begin());
+}
+
+// The watcher on shaders/ of the source tree, compiling into the build's shader folder; with
+// --test-hot-reload, on copies of both, and the kernels loaded from the copy.
+void Viewer::startHotReload() {
+    const bool spirv = device_.capabilities().shaderFormat == rhi::ShaderFormat::Spirv;
+    std::optional<KernelCompiler> compiler;
+    if (options_.hotReload && spirv) {
+        compiler = buildKernelCompiler(shaders_->directory());
+    }
+    if (!options_.testHotReload.empty()) {
+        if (!compiler) {
+            throw std::runtime_error(
+                "--test-hot-reload: this build has no shader hot reload (it needs SPIR-V "
+                "kernels compiled with glslang and the source tree's shaders/)");
+        }
+        hotReloadTest_ = std::make_unique<HotReloadTest>(options_.testHotReload, compiler->sourceRoot,
+                                                         shaders_->directory());
+        pipelines_.reset();
+        shaders_ = std::make_unique<rhi::ShaderLibrary>(device_, hotReloadTest_->spirv());
+        pipelines_ = std::make_unique<gi::PipelineCache>(device_, *shaders_);
+        compiler->sourceRoot = hotReloadTest_->sources();
+        compiler->outputRoot = hotReloadTest_->spirv();
+        pendingView_ = HotReloadTest::kView;
+    }
+    if (compiler) {
+        std::cout << "hot reload: watching " << compiler->sourceRoot.string() << '\n';
+        hotReload_ = std::make_unique<ShaderHotReload>(std::move(*compiler));
+    }
 }
 
 void Viewer::buildRenderer() {
@@ -129,19 +155,42 @@ void Viewer::buildRenderer() {
     memory_.renderer = allocated(device_) - before;
     memory_.lumen = renderer_->lumen() ? renderer_->lumen()->memory() : gi::LumenMemory{};
     renderer_->setCamera(camera_.camera());
+    listViews();
+    viewsComplete_ = false;
+}
+
+// The renderer's buffers as the view menu; the same buffer stays on screen when the list still
+// has it. Some exist only once a frame has run (the shadow maps of the lights found then), so
+// the list is made again after a new renderer's first frame.
+void Viewer::listViews() {
     const std::string current = state_.view < state_.views.size() ? state_.views[state_.view].name : "";
     state_.views = listBufferViews(*renderer_, sceneDiagonal_);
     state_.view = 0;
     for (size_t i = 0; i < state_.views.size(); ++i) {
         if (state_.views[i].name == current) {
-            state_.view = i; // the same buffer stays on screen when the new renderer has it
+            state_.view = i;
         }
+    }
+}
+
+void Viewer::completeViews() {
+    listViews();
+    viewsComplete_ = true;
+    if (!pendingView_.empty()) {
+        selectView(pendingView_);
+        pendingView_.clear();
+    }
+    if (!viewsPrinted_) {
+        std::cout << "views: " << state_.views.size()
+                  << " (the final image and every buffer of the view menu)\n";
+        viewsPrinted_ = true;
     }
 }
 
 void Viewer::applyEdits() {
     if (state_.rebuildRenderer) {
         state_.rebuildRenderer = false;
+        shownImage_.reset(); // it may be the old renderer's
         buildRenderer();
         state_.status = "renderer rebuilt: " + state_.technique +
                         (renderer_->lumen() ? ", preset " + state_.preset : std::string());
@@ -276,8 +325,9 @@ void Viewer::scriptedWindowSteps(uint64_t frame) {
 }
 
 // --test-edits: what a user does in the panels, scripted: the technique switched to direct and
-// back to lumen with another preset (each a renderer rebuild), and the first light made brighter
-// and moved, so those paths run under validation.
+// back to lumen with another preset (each a renderer rebuild), the first light made brighter
+// and moved, and the slice views' axis set to x and then y (through the scene's middle), so
+// those paths run under validation.
 void Viewer::scriptedEdits(uint64_t frame) {
     switch (frame) {
     case 3:
@@ -298,6 +348,16 @@ void Viewer::scriptedEdits(uint64_t frame) {
             state_.lightsChanged = true;
         }
         break;
+    case 12:
+    case 24: {
+        const uint32_t axis = frame == 12 ? LUMINA_VISUALISE_AXIS_X : LUMINA_VISUALISE_AXIS_Y;
+        state_.slice.axis = axis;
+        state_.slice.position =
+            sceneBounds_.empty() ? 0.0f : 0.5f * (sceneBounds_.min[axis] + sceneBounds_.max[axis]);
+        std::cout << "slice axis: "
+                  << "xyz"[axis] << std::endl;
+        break;
+    }
     default:
         break;
     }
@@ -308,9 +368,11 @@ void Viewer::recordFrame(rhi::ICommandList& commands, uint64_t frameIndex,
     gi::FrameContext frame(*pipelines_, commands, frameIndex);
     renderer_->render(frame);
     if (backbuffer_) {
-        const float exposureScale = std::exp2(state_.exposureEv);
+        const ViewSettings settings{
+            .exposureScale = std::exp2(state_.exposureEv), .slice = state_.slice, .camera = camera_.camera()};
         const rhi::TextureHandle image =
-            visualiser_.record(frame, *renderer_, state_.views[state_.view], exposureScale);
+            visualiser_.record(frame, *renderer_, state_.views[state_.view], settings);
+        shownImage_ = image;
         commands.clearColor(*backbuffer_, kLetterboxColor);
         ui_->beginFrame();
         buildUi(image);
@@ -332,10 +394,11 @@ void Viewer::reloadShaders() {
     // The frames in flight still use the old pipelines; they are released with them.
     device_.waitIdle();
     pipelines_.reset();
-    shaders_ = std::make_unique<rhi::ShaderLibrary>(device_);
+    shaders_ = std::make_unique<rhi::ShaderLibrary>(device_, shaders_->directory());
     pipelines_ = std::make_unique<gi::PipelineCache>(device_, *shaders_);
     state_.shaderError.clear();
     state_.status = hotReload_->message();
+    ++reloads_;
     std::cout << "hot reload: " << state_.status << std::endl;
 }
 
@@ -343,7 +406,7 @@ void Viewer::takeScreenshot(const std::filesystem::path& path) {
     if (options_.screenshotWindow && backbuffer_) {
         writeWindowScreenshot(device_, *backbuffer_, path);
     } else {
-        writeScreenshot(device_, *renderer_, path);
+        writeScreenshot(device_, *renderer_, shownImage_ ? *shownImage_ : *renderer_->deferred().ldr(), path);
     }
     state_.status = "wrote " + path.string();
     std::cout << state_.status << std::endl;
@@ -379,6 +442,7 @@ int Viewer::run() {
         reloadShaders();
         if (options_.cycleViews) {
             state_.view = frame % state_.views.size();
+            std::cout << "view: " << state_.views[state_.view].name << '\n';
         }
 
         InFlight& slot = inFlight_[frame % inFlight_.size()];
@@ -407,6 +471,9 @@ int Viewer::run() {
 
         slot.commands->begin();
         recordFrame(*slot.commands, frame, slot.skipped);
+        if (!viewsComplete_) {
+            completeViews();
+        }
         slot.commands->end();
         slot.fenceValue = queue.submit(*slot.commands);
         if (backbuffer_ && swapchain_->present(*backbuffer_) == rhi::PresentResult::Suboptimal) {
@@ -422,6 +489,14 @@ int Viewer::run() {
             }
         }
         if (lastFrame != 0 && frame >= lastFrame) {
+            break;
+        }
+        const auto readShown = [&] {
+            device_.waitIdle();
+            return rhi::readTexture(device_, *shownImage_);
+        };
+        if (hotReloadTest_ && shownImage_ &&
+            hotReloadTest_->afterFrame(readShown, reloads_, hotReload_->error())) {
             break;
         }
     }

@@ -5,6 +5,7 @@
 #include "app/viewer/buffer_views.h"
 #include "app/viewer/fly_camera.h"
 #include "app/viewer/glfw_window.h"
+#include "app/viewer/hot_reload_test.h"
 #include "app/viewer/shader_hot_reload.h"
 #include "app/viewer/ui_renderer.h"
 #include "app/viewer/viewer_options.h"
@@ -31,6 +32,7 @@ struct ViewerState {
     bool showUi = true;
     size_t view = 0; // index into views
     std::vector<BufferView> views;
+    SliceSettings slice; // where the SDF and voxel-lighting slices cut
     bool rebuildRenderer = false;
     bool lightsChanged = false;
     bool screenshotRequested = false;
@@ -73,12 +75,18 @@ private:
     void scriptedEdits(uint64_t frame);
     void recordFrame(rhi::ICommandList& commands, uint64_t frameIndex, std::vector<gi::SkippedPass>& skipped);
     void buildUi(const rhi::TextureHandle& image);
+    void slicePanel(const BufferView& view);
     void takeScreenshot(const std::filesystem::path& path);
     void reloadShaders();
+    void startHotReload();
+    void selectView(const std::string& name);
+    void listViews();
+    void completeViews();
 
     rhi::IDevice& device_;
     ViewerOptions options_;
     scene::Scene scene_;
+    scene::Bounds sceneBounds_;
     float sceneDiagonal_ = 1.0f;
     GlfwWindow window_;
     rhi::SwapchainHandle swapchain_;
@@ -89,6 +97,11 @@ private:
     std::unique_ptr<rhi::ShaderLibrary> shaders_;
     std::unique_ptr<gi::PipelineCache> pipelines_;
     std::unique_ptr<ShaderHotReload> hotReload_;
+    uint32_t reloads_ = 0; // kernel reloads so far
+    std::unique_ptr<HotReloadTest> hotReloadTest_;
+    bool viewsComplete_ = false; // listed after the renderer's first frame
+    bool viewsPrinted_ = false;
+    std::string pendingView_; // --view, chosen once the list is complete
     std::unique_ptr<gi::GpuScene> gpuScene_;
     std::unique_ptr<gi::FrameRenderer> renderer_;
     FlyCamera camera_;
@@ -96,6 +109,7 @@ private:
     MemoryUse memory_;
     std::unique_ptr<UiRenderer> ui_;
     Visualiser visualiser_;
+    rhi::TextureHandle shownImage_; // the last frame's display image: the composite's or a debug view
     std::vector<InFlight> inFlight_;
     double lastCursorX_ = 0, lastCursorY_ = 0;
     bool looking_ = false;

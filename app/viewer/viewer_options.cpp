@@ -27,8 +27,13 @@ const std::vector<FlagSpec>& viewerFlags() {
         {"no-hot-reload", "",
          "do not recompile a kernel when its HLSL file is saved (SPIR-V builds with glslang)"},
         {"test-resize", "", "resize, minimise and restore the window during the first frames (tests)"},
-        {"test-edits", "", "switch technique and preset and edit a light during the first frames (tests)"},
+        {"test-edits", "",
+         "switch technique and preset, edit a light and turn the slice views' axis during the first "
+         "frames (tests)"},
         {"cycle-views", "", "show the next debug view every frame (tests: every view once)"},
+        {"test-hot-reload", "DIR",
+         "edit a copy of the kernels under DIR while running and check each edit is reloaded, and a "
+         "syntax error reported with the old kernel kept; exit 0 when both hold (tests)"},
     };
     return flags;
 }
@@ -149,6 +154,10 @@ ViewerOptions parseViewerOptions(const std::vector<std::string>& rawArgs) {
     options.cycleViews = parsed.has("cycle-views");
     options.testEdits = parsed.has("test-edits");
     options.screenshotWindow = parsed.has("screenshot-window");
+    options.testHotReload = parsed.get("test-hot-reload");
+    if (!options.testHotReload.empty() && !options.hotReload) {
+        throw UsageError("--test-hot-reload tests hot reload: it cannot run with --no-hot-reload");
+    }
     if (options.screenshotWindow && options.screenshotAfter && options.screenshotPath.extension() != ".png") {
         throw UsageError("--screenshot-window writes the window as .png only, not " +
                          options.screenshotPath.string());

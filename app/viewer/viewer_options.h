@@ -29,6 +29,8 @@ struct ViewerOptions {
     bool cycleViews = false;
     bool testEdits = false; // switches technique and preset and edits a light during the first frames
     bool hotReload = true;  // recompile kernels whose HLSL file is saved
+    // Checks hot reload by editing a copy of the kernels under this folder (tests; empty: off).
+    std::filesystem::path testHotReload;
     bool help = false;
 };
 

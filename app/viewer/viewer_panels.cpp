@@ -61,6 +61,36 @@ bool sunDirection(glm::vec3& direction) {
 
 } // namespace
 
+// Where the slice views cut: the axis, the plane's world position within the scene's bounds, and
+// for the SDF slice of a scene with cascades the cascade shown (auto: the finest holding the plane).
+void Viewer::slicePanel(const BufferView& view) {
+    SliceSettings& slice = state_.slice;
+    static constexpr const char* kAxes[] = {"x", "y", "z"};
+    int axis = int(slice.axis);
+    if (ImGui::Combo("slice axis", &axis, kAxes, 3)) {
+        slice.axis = uint32_t(axis);
+        if (!sceneBounds_.empty()) {
+            slice.position = 0.5f * (sceneBounds_.min[axis] + sceneBounds_.max[axis]);
+        }
+    }
+    if (!sceneBounds_.empty()) {
+        ImGui::SliderFloat("slice position", &slice.position, sceneBounds_.min[slice.axis],
+                           sceneBounds_.max[slice.axis], "%.3f");
+    }
+    if (view.source != BufferView::Source::SdfSlice || renderer_->lumen() == nullptr) {
+        return;
+    }
+    const sdf::SceneSdf& sdfs = renderer_->lumen()->sdf();
+    const int count = int(sdfs.data().cascades.count);
+    if (count > 1) {
+        ImGui::SliderInt("cascade", &slice.cascade, -1, count - 1, slice.cascade < 0 ? "auto" : "%d");
+    }
+    const uint32_t shown = sliceCascade(sdfs, slice);
+    const sdf::GlobalSdfSettings grid = sdfs.cascadeGrid(shown);
+    ImGui::Text("cascade %u of %d: %ux%ux%u voxels of %.3g", shown, count, grid.dims.x, grid.dims.y,
+                grid.dims.z, grid.voxelSize);
+}
+
 void Viewer::buildUi(const rhi::TextureHandle& image) {
     ImGui::NewFrame();
     drawFitted(ui_->texture(image), float(image->desc().width), float(image->desc().height));
@@ -105,6 +135,9 @@ void Viewer::buildUi(const rhi::TextureHandle& image) {
         if (view.mode == LUMINA_VISUALISE_SCALAR || view.mode == LUMINA_VISUALISE_ALPHA) {
             ImGui::DragFloatRange2("range", &state_.views[state_.view].lo, &state_.views[state_.view].hi,
                                    std::max(1e-4f, (view.hi - view.lo) * 0.005f));
+        }
+        if (view.isSlice()) {
+            slicePanel(view);
         }
     }
     if (ImGui::CollapsingHeader("lights")) {

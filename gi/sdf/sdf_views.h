@@ -39,6 +39,8 @@ public:
     // The last trace's pixels: 0.5 * normal + 0.5 in R, G, B (black on a miss), t in "t".
     image::Image readNormals(rhi::IDevice& device) const;
 
+    // float4 per pixel, row-major: what readNormals reads back.
+    const rhi::BufferHandle& pixels() const { return pixels_; }
     uint32_t width() const { return width_; }
     uint32_t height() const { return height_; }
 

@@ -42,6 +42,8 @@ public:
                 float blend = 1.0f) const;
 
     const rhi::BufferHandle& probes() const { return filtered_; }
+    // The probes as the last trace left them, before the spatial filter.
+    const rhi::BufferHandle& tracedProbes() const { return traced_; }
 
     // How far its rays reach (world): a change farther than this from a card does not reach it
     // in one bounce.

@@ -102,6 +102,8 @@ public:
     // The tiles that hold cards, row-major atlas tile indices.
     const std::vector<uint32_t>& cardTiles() const { return cardTiles_; }
     const CardCapturePass& capture() const { return capture_; }
+    // The R32_UINT tile-to-card lookup (TileOwnerTexture), current once update() has run.
+    const rhi::TextureHandle& tileOwner() const { return tileOwner_.texture(); }
     // The cards and their BVH on the GPU (StructuredBuffer<SurfaceCard>, <CardBvhNode>), current
     // once update() has run since the last move: what SDF hits outside the cache read to find
     // their card (shaders/surface_cache/card_bvh_traversal.hlsli).

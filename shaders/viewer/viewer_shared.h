@@ -29,12 +29,22 @@ LUMINA_STATIC_ASSERT_SIZE(UiConstants, 32);
 
 #define LUMINA_VISUALISE_GROUP_SIZE 8
 
+// Slice views (the global SDF, the voxel lighting) cut the volume at a world position along
+// one axis; the image spans the other two axes, the next one across and the one after up
+// (x: z across, y up; y: x across, z up; z: x across, y up).
+#define LUMINA_VISUALISE_AXIS_X 0u
+#define LUMINA_VISUALISE_AXIS_Y 1u
+#define LUMINA_VISUALISE_AXIS_Z 2u
+
 struct VisualiseConstants {
     uint4 sizeModeLayer;  // output width, height; mode; source array layer
     float4 rangeExposure; // scalar lo, hi; exposure scale (radiance); unused
     uint4 probeGrid;      // probe buffers: grid width, height; entries per probe; tile width
+    uint4 slice;          // slice views: axis; SDF cascade; voxels per axis of the volume; 0
+    float4 sliceMin;      // slice views: xyz the world box the image spans; w the plane's position
+    float4 sliceMax;      //   along the axis; xyz the box's far corner; w 0
 };
-LUMINA_STATIC_ASSERT_SIZE(VisualiseConstants, 48);
+LUMINA_STATIC_ASSERT_SIZE(VisualiseConstants, 96);
 
 LUMINA_GPU_NAMESPACE_END
 

@@ -1,11 +1,12 @@
 # lumina-viewer under a virtual X display (xvfb-run) on lavapipe, run with cmake -P:
 #   VIEWER, LUMINA: the executables; WORK: a scratch folder.
-# 1. flags: --help exits 0 and lists the keys; bad flags exit 2 with the problem named.
+# 1. flags: --help exits 0 and lists the keys; bad flags, and a --view the technique does not
+#    have, exit 2 with the problem named.
 # 2. cornell_box at 96x96 with the validation layer (synchronization validation on): the window
 #    is resized, minimised and restored while it renders (--test-resize), and after FRAMES
 #    frames the viewer writes the frame as EXR and exits 0. Any validation message exits 1.
 #    Then every debug view of the view menu once, one per frame (--cycle-views), with the
-#    technique, preset and a light changed on the way (--test-edits).
+#    technique, preset, a light and the slice axis changed on the way (--test-edits).
 # 3. `lumina render` of the same scene, size and frame count writes the same view; the two
 #    EXRs must agree within relMSE 1e-4 (the viewer renders exactly the frames `lumina render`
 #    does, plus its own passes after the composite; measured on lavapipe: relMSE 0).
@@ -36,6 +37,11 @@ expect_match(screenshot-needs-path "${ERR}" "--screenshot-after needs two values
 viewer(2 not-a-viewer-flag cornell_box --seed 3)
 expect_match(not-a-viewer-flag "${ERR}" "--seed is not a lumina-viewer flag")
 viewer(2 bad-frames-in-flight cornell_box --frames-in-flight 5)
+viewer(2 hot-reload-test-without-hot-reload cornell_box --test-hot-reload "${WORK}/x" --no-hot-reload)
+expect_match(hot-reload-test-without-hot-reload "${ERR}" "--test-hot-reload .*cannot run with --no-hot-reload")
+# A view name is checked against the list the first frame completes (direct: no GI views).
+viewer(2 no-such-view cornell_box --size 16x16 --technique direct --view "sdf: global SDF slice" --frames 3)
+expect_match(no-such-view "${ERR}" "--view 'sdf: global SDF slice': no such view for this technique")
 
 viewer(0 render cornell_box --size ${SIZE} --validation --test-resize --screenshot-after ${FRAMES}
        "${WORK}/viewer.exr")
@@ -47,13 +53,30 @@ if(ERR MATCHES "validation")
 endif()
 
 # Every debug view once, on a scene with a point light (cube shadow maps), under validation, while
-# the technique is switched to direct and back to lumen (preset low) and the light is edited.
-viewer(0 views cornell_box_point --size 32x32 --validation --cycle-views --test-edits --frames 30)
+# the technique is switched to direct and back to lumen (preset low) and the light is edited. The
+# last rebuild is at frame 6; from there --cycle-views shows view (frame mod views) each frame,
+# so 6 + VIEW_FRAMES frames show every view of the lumen renderer at least once. The slice views
+# are turned to the x axis at frame 12 and to y at frame 24.
+set(VIEW_FRAMES 44)
+math(EXPR frames "6 + ${VIEW_FRAMES}")
+viewer(0 views cornell_box_point --size 32x32 --validation --cycle-views --test-edits --frames ${frames})
 expect_match(views "${OUT}" "renderer rebuilt: direct.*renderer rebuilt: lumen, preset low")
+expect_match(views "${OUT}" "slice axis: x.*slice axis: y")
 string(REGEX MATCH "views: ([0-9]+)" _ "${OUT}")
-if(NOT CMAKE_MATCH_1 OR CMAKE_MATCH_1 GREATER 30)
-  message(FATAL_ERROR "[views] expected at most 30 views, got '${CMAKE_MATCH_1}'")
+if(NOT CMAKE_MATCH_1 OR CMAKE_MATCH_1 GREATER VIEW_FRAMES)
+  message(FATAL_ERROR "[views] expected at most ${VIEW_FRAMES} views, got '${CMAKE_MATCH_1}'")
 endif()
+# The GI views of the lumen renderer, each shown (printed as "view: NAME" when it is).
+foreach(name "sdf: global SDF slice" "sdf: traced normals, near field" "sdf: traced normals, far field"
+             "sdf: traced normals, cone" "surface cache: card outlines over the final image"
+             "surface cache: card outlines over the atlas albedo"
+             "surface cache: card outlines over the atlas final lighting"
+             "surface cache: radiosity probes, irradiance \\(filtered\\)"
+             "surface cache: radiosity probes, irradiance \\(traced\\)" "surface cache: radiosity probes, normal"
+             "surface cache: voxel lighting slice" "screen probes: ray directions"
+             "screen probes: SH radiance \\(the low-pass\\)" "shadows: first point light, face -z")
+  expect_match(views "${OUT}" "view: ${name}\n")
+endforeach()
 if(ERR MATCHES "validation")
   message(FATAL_ERROR "[views] validation messages:\n${ERR}")
 endif()

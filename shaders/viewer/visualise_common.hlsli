@@ -1,0 +1,84 @@
+#ifndef LUMINA_VISUALISE_COMMON_HLSLI
+#define LUMINA_VISUALISE_COMMON_HLSLI
+// What every debug-view kernel of the viewer shares (app/viewer/buffer_views.cpp): the
+// constants, the display image it writes (u0: RGBA8, sRGB-encoded like the composite's output),
+// and the mapping of a value to a colour by mode.
+#include "common/bindings.hlsli"
+#include "common/tonemap_shared.h"
+#include "viewer/viewer_shared.h"
+
+LUMINA_PUSH_CONSTANTS(VisualiseConstants, gVisualise);
+LUMINA_UAV_FORMAT(rgba8) RWTexture2D<float4> gOutput : register(u0);
+
+// A colour per integer id (a bit-mixing hash, so that neighbouring ids differ); id ~0u: black.
+float3 idColor(uint id) {
+    if (id == 0xFFFFFFFFu) {
+        return float3(0.0, 0.0, 0.0);
+    }
+    uint h = id * 747796405u + 2891336453u;
+    h = ((h >> ((h >> 28u) + 4u)) ^ h) * 277803737u;
+    h = (h >> 22u) ^ h;
+    return float3(h & 0xFFu, (h >> 8) & 0xFFu, (h >> 16) & 0xFFu) / 255.0 * 0.8 + 0.2;
+}
+
+float3 display(float4 value) {
+    const uint mode = gVisualise.sizeModeLayer.z;
+    if (mode == LUMINA_VISUALISE_RADIANCE) {
+        return tonemapToDisplay3(value.rgb, gVisualise.rangeExposure.z);
+    }
+    if (mode == LUMINA_VISUALISE_NORMAL) {
+        return saturate(value.xyz * 0.5 + 0.5);
+    }
+    if (mode == LUMINA_VISUALISE_SCALAR || mode == LUMINA_VISUALISE_ALPHA) {
+        const float v = mode == LUMINA_VISUALISE_SCALAR ? value.x : value.w;
+        const float lo = gVisualise.rangeExposure.x;
+        const float hi = gVisualise.rangeExposure.y;
+        return saturate((v - lo) / max(hi - lo, 1e-20)).xxx;
+    }
+    if (mode == LUMINA_VISUALISE_ID) {
+        return idColor(uint(value.x));
+    }
+    return saturate(value.rgb);
+}
+
+bool outside(uint2 id) {
+    return id.x >= gVisualise.sizeModeLayer.x || id.y >= gVisualise.sizeModeLayer.y;
+}
+
+// Probe p = (px, py) owns a tile tileWidth entries wide at (px tileWidth, py tileHeight); entry i of
+// it, at (i % tileWidth, i / tileWidth) in the tile, is element p perProbe + i of the buffer (the
+// layout of gi/screen_probes/screen_probe_readback.cpp's images). False outside the image, and for
+// the tile's texels past the last entry, which it paints black.
+bool probeEntry(uint2 id, out uint probe, out uint entry) {
+    probe = 0;
+    entry = 0;
+    if (outside(id)) {
+        return false;
+    }
+    const uint perProbe = gVisualise.probeGrid.z;
+    const uint tileWidth = gVisualise.probeGrid.w;
+    const uint tileHeight = (perProbe + tileWidth - 1u) / tileWidth;
+    const uint2 tile = uint2(id.x / tileWidth, id.y / tileHeight);
+    probe = tile.y * gVisualise.probeGrid.x + tile.x;
+    entry = (id.y % tileHeight) * tileWidth + id.x % tileWidth;
+    if (entry >= perProbe) {
+        gOutput[id] = float4(0.0, 0.0, 0.0, 1.0);
+        return false;
+    }
+    return true;
+}
+
+// Slice views: the world point at uv (0..1 across and down the image) of the plane through
+// sliceMin.w across the axis, over the box [sliceMin, sliceMax]; see LUMINA_VISUALISE_AXIS_X.
+float3 slicePoint(float2 uv) {
+    const uint axis = gVisualise.slice.x;
+    const uint across = axis == LUMINA_VISUALISE_AXIS_X ? 2u : 0u;
+    const uint up = axis == LUMINA_VISUALISE_AXIS_Y ? 2u : 1u;
+    float3 p = float3(0.0, 0.0, 0.0);
+    p[axis] = gVisualise.sliceMin.w;
+    p[across] = lerp(gVisualise.sliceMin[across], gVisualise.sliceMax[across], uv.x);
+    p[up] = lerp(gVisualise.sliceMax[up], gVisualise.sliceMin[up], uv.y); // +up at the top
+    return p;
+}
+
+#endif
