@@ -6,6 +6,7 @@
 #include "app/viewer/fly_camera.h"
 #include "app/viewer/glfw_window.h"
 #include "app/viewer/hot_reload_test.h"
+#include "app/viewer/scene_edits.h"
 #include "app/viewer/shader_hot_reload.h"
 #include "app/viewer/ui_renderer.h"
 #include "app/viewer/viewer_options.h"
@@ -34,7 +35,6 @@ struct ViewerState {
     std::vector<BufferView> views;
     SliceSettings slice; // where the SDF and voxel-lighting slices cut
     bool rebuildRenderer = false;
-    bool lightsChanged = false;
     bool screenshotRequested = false;
     std::string status;        // the last action's message (screenshot written, rebuild failed...)
     std::string shaderError;   // the compiler's output when a saved kernel does not compile
@@ -86,6 +86,7 @@ private:
     rhi::IDevice& device_;
     ViewerOptions options_;
     scene::Scene scene_;
+    SceneEdits edits_;
     scene::Bounds sceneBounds_;
     float sceneDiagonal_ = 1.0f;
     GlfwWindow window_;

@@ -1,7 +1,8 @@
 // The viewer's UI (Dear ImGui): the frame full window (or the chosen debug view), and the
 // panels: renderer (technique, preset, exposure, vsync), view (every intermediate buffer),
-// lights (sun direction, each light's position, colour and intensity), GPU passes with their
-// times and skip reasons, the frame-time graph and memory per subsystem.
+// lights (sun direction, each light's position, colour and intensity), objects, emission and the
+// animation (scene_edits.h), GPU passes with their times and skip reasons, the frame-time graph
+// and memory per subsystem.
 #include "app/viewer/viewer.h"
 
 #include <algorithm>
@@ -147,20 +148,21 @@ void Viewer::buildUi(const rhi::TextureHandle& image) {
             const std::string title = std::to_string(i) + ": " + scene::lightTypeName(light.type) +
                                       (light.name.empty() ? "" : " " + light.name);
             if (ImGui::TreeNodeEx(title.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
-                bool changed = ImGui::DragFloat("intensity", &light.intensity,
-                                                std::max(light.intensity, 1e-3f) * 0.01f, 0.0f, 1e9f, "%.4g");
-                changed |= ImGui::ColorEdit3("colour", &light.color.x);
+                // The frame loop hands every edit of scene_ to the renderer (Viewer::applyEdits).
+                ImGui::DragFloat("intensity", &light.intensity, std::max(light.intensity, 1e-3f) * 0.01f,
+                                 0.0f, 1e9f, "%.4g");
+                ImGui::ColorEdit3("colour", &light.color.x);
                 if (light.type == scene::LightType::Directional) {
-                    changed |= sunDirection(light.direction);
+                    sunDirection(light.direction);
                 } else {
-                    changed |= ImGui::DragFloat3("position", &light.position.x, sceneDiagonal_ * 0.002f);
+                    ImGui::DragFloat3("position", &light.position.x, sceneDiagonal_ * 0.002f);
                 }
-                state_.lightsChanged |= changed;
                 ImGui::TreePop();
             }
             ImGui::PopID();
         }
     }
+    edits_.panels(scene_, sceneDiagonal_);
     if (ImGui::CollapsingHeader("frame time", ImGuiTreeNodeFlags_DefaultOpen)) {
         const std::vector<float> cpu(state_.frameMs.begin(), state_.frameMs.end());
         const std::vector<float> gpu(state_.gpuMs.begin(), state_.gpuMs.end());
