@@ -4,6 +4,7 @@
 #include "gi/scene/animation_summary.h"
 #include "gi/scene/gltf_loader.h"
 #include "gi/scene/scene_error.h"
+#include "gi/scene/scene_loader.h"
 #include "tests/scene/test_files.h"
 
 #include <cmath>
@@ -137,6 +138,25 @@ TEST(GltfAnimation, LightsFollowTheirNodes) {
     expectNear(scene.lights[0].position, {2.0f, 1.0f, 0.0f}, "light position at 1 s");
     expectNear(scene.lights[0].direction, {-1.0f, 0.0f, 0.0f}, "light direction at 1 s");
     EXPECT_EQ(scene.lights[0].intensity, 2.0f); // no track: untouched
+}
+
+// A scene file that replaces the glTF's lights drops their animation with them: the light that
+// takes the animated one's index stays where the file put it.
+TEST(GltfAnimation, ReplacedLightsLoseTheirAnimation) {
+    Json doc = animatedGltf();
+    doc["extensionsUsed"] = {"KHR_lights_punctual"};
+    doc["extensions"] = {{"KHR_lights_punctual", {{"lights", {{{"type", "point"}, {"intensity", 2.0}}}}}}};
+    doc["nodes"][1]["extensions"] = {{"KHR_lights_punctual", {{"light", 0}}}};
+    const test::TempDir dir;
+    dir.write("animated.gltf", doc.dump());
+    const auto file = dir.write("replaced.json", R"({"gltf": "animated.gltf", "replaceLights": true,
+        "lights": [{"type": "point", "name": "fixed", "position": [0, 7, 0], "intensity": 1}]})");
+    Scene scene = loadScene(file.string());
+    ASSERT_EQ(scene.lights.size(), 1u);
+    EXPECT_TRUE(scene.animation.animatedLights().empty());
+    EXPECT_EQ(scene.animation.animatedInstances().size(), 3u); // the instances still move
+    animateScene(scene, 30);
+    expectNear(scene.lights[0].position, {0.0f, 7.0f, 0.0f}, "the scene file's light");
 }
 
 TEST(GltfAnimation, SummaryNamesNodesAndInterpolation) {
