@@ -28,6 +28,11 @@ void describe(std::string& line, const char* what, const Keyframes<T>& track) {
             (track.times.size() == 1 ? " key, " : " keys, ") + mode + ")";
 }
 
+// "1 light", "3 lights".
+std::string count(size_t n, const std::string& noun) {
+    return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
+}
+
 template <typename T>
 size_t tracks(const Keyframes<T>& track) {
     return track.empty() ? 0 : 1;
@@ -80,10 +85,10 @@ std::vector<std::string> animationSummary(const Scene& scene, size_t maxLines) {
     const bool loops = animation.scriptLoopSeconds > 0.0 || !animation.clips.empty();
     char fps[32];
     std::snprintf(fps, sizeof(fps), "%g", double(scene.framesPerSecond));
-    std::vector<std::string> lines = {std::to_string(animationTrackCount(animation)) + " tracks on " +
-                                      std::to_string(animation.animatedInstances().size()) + " instances, " +
-                                      std::to_string(animation.animatedLights().size()) + " lights, " +
-                                      std::to_string(animation.animatedMaterials().size()) + " materials; " +
+    std::vector<std::string> lines = {count(animationTrackCount(animation), "track") + " on " +
+                                      count(animation.animatedInstances().size(), "instance") + ", " +
+                                      count(animation.animatedLights().size(), "light") + ", " +
+                                      count(animation.animatedMaterials().size(), "material") + "; " +
                                       (loops ? "loops every " : "ends at ") + seconds(length) + " (" +
                                       std::to_string(std::llround(length * scene.framesPerSecond)) +
                                       " frames at " + fps + " per second)"};

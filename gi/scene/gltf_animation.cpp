@@ -212,13 +212,21 @@ void convertAnimations(const Context& context, const NodeOrigins& origins, Scene
             animated[channel.node] = true;
         }
     }
+    // Whether a node or any ancestor is animated, memoised so that a long chain of nodes costs
+    // linear time, not quadratic.
+    std::vector<int8_t> moving(model.nodes.size(), -1);
     auto moves = [&](int node) {
-        for (; node >= 0; node = parent[size_t(node)]) {
-            if (animated[size_t(node)]) {
-                return true;
-            }
+        std::vector<int> chain;
+        int n = node;
+        for (; n >= 0 && moving[size_t(n)] < 0; n = parent[size_t(n)]) {
+            chain.push_back(n);
         }
-        return false;
+        bool value = n >= 0 && moving[size_t(n)] == 1;
+        for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
+            value = value || animated[size_t(*it)];
+            moving[size_t(*it)] = value ? 1 : 0;
+        }
+        return moving[size_t(node)] == 1;
     };
     // Keep the nodes that place a moving instance or light, and their ancestors, parents first.
     std::map<int, uint32_t> kept;

@@ -1,8 +1,10 @@
 // glTF animations through the real loader: a small glTF written here, with a node hierarchy,
 // LINEAR, STEP and CUBICSPLINE samplers and two looping animations; then each kind of malformed
 // animation data, which must be a SceneError naming the problem.
+#include "gi/scene/animation_summary.h"
 #include "gi/scene/gltf_loader.h"
 #include "gi/scene/scene_error.h"
+#include "gi/scene/scene_loader.h"
 #include "tests/scene/test_files.h"
 
 #include <cmath>
@@ -118,6 +120,55 @@ TEST(GltfAnimation, ChannelsDriveInstancesThroughTheHierarchy) {
 
     animateScene(scene, 150); // 2.5 s: "wave" looped to 0.5 s
     expectNear(at(named(scene, "arm"), glm::vec3(0.0f)), {1.0f, 0.0f, 0.0f}, "arm a loop later");
+}
+
+TEST(GltfAnimation, LightsFollowTheirNodes) {
+    Json doc = animatedGltf();
+    doc["extensionsUsed"] = {"KHR_lights_punctual"};
+    doc["extensions"] = {{"KHR_lights_punctual",
+                          {{"lights", {{{"type", "spot"}, {"intensity", 2.0}, {"spot", Json::object()}}}}}}};
+    doc["nodes"][1]["extensions"] = {{"KHR_lights_punctual", {{"light", 0}}}};
+    Scene scene = loadText(doc);
+    ASSERT_EQ(scene.lights.size(), 1u);
+    EXPECT_EQ(scene.animation.animatedLights(), std::vector<uint32_t>{0});
+    animateScene(scene, 30); // on the hand: (1, 1, 0), still looking along -z
+    expectNear(scene.lights[0].position, {1.0f, 1.0f, 0.0f}, "light position");
+    expectNear(scene.lights[0].direction, {0.0f, 0.0f, -1.0f}, "light direction");
+    animateScene(scene, 60); // the hand turned 90 degrees about y: -z becomes -x
+    expectNear(scene.lights[0].position, {2.0f, 1.0f, 0.0f}, "light position at 1 s");
+    expectNear(scene.lights[0].direction, {-1.0f, 0.0f, 0.0f}, "light direction at 1 s");
+    EXPECT_EQ(scene.lights[0].intensity, 2.0f); // no track: untouched
+}
+
+// A scene file that replaces the glTF's lights drops their animation with them: the light that
+// takes the animated one's index stays where the file put it.
+TEST(GltfAnimation, ReplacedLightsLoseTheirAnimation) {
+    Json doc = animatedGltf();
+    doc["extensionsUsed"] = {"KHR_lights_punctual"};
+    doc["extensions"] = {{"KHR_lights_punctual", {{"lights", {{{"type", "point"}, {"intensity", 2.0}}}}}}};
+    doc["nodes"][1]["extensions"] = {{"KHR_lights_punctual", {{"light", 0}}}};
+    const test::TempDir dir;
+    dir.write("animated.gltf", doc.dump());
+    const auto file = dir.write("replaced.json", R"({"gltf": "animated.gltf", "replaceLights": true,
+        "lights": [{"type": "point", "name": "fixed", "position": [0, 7, 0], "intensity": 1}]})");
+    Scene scene = loadScene(file.string());
+    ASSERT_EQ(scene.lights.size(), 1u);
+    EXPECT_TRUE(scene.animation.animatedLights().empty());
+    EXPECT_EQ(scene.animation.animatedInstances().size(), 3u); // the instances still move
+    animateScene(scene, 30);
+    expectNear(scene.lights[0].position, {0.0f, 7.0f, 0.0f}, "the scene file's light");
+}
+
+TEST(GltfAnimation, SummaryNamesNodesAndInterpolation) {
+    const std::vector<std::string> lines = animationSummary(loadText(animatedGltf()));
+    ASSERT_EQ(lines.size(), 3u);
+    EXPECT_EQ(
+        lines[0],
+        "3 tracks on 3 instances, 0 lights, 0 materials; loops every 2 s (120 frames at 60 per second)");
+    EXPECT_EQ(lines[1],
+              "glTF animation 'wave', 2 s: node 'arm' translation (2 keys, linear), node 'hand' rotation "
+              "(2 keys, step)");
+    EXPECT_EQ(lines[2], "glTF animation 'grow', 1 s: node 'grow' scale (2 keys, cubicspline)");
 }
 
 TEST(GltfAnimation, TheLoadedSceneIsFrameZero) {
