@@ -68,9 +68,9 @@ apt-get "${apt_options[@]}" -q update >"$work/update.log" 2>&1 || {
     fail "apt-get update failed for $mirror (unstable, bookworm-backports)"
 }
 for pin in "${vkd3d_packages[@]}" "${mesa_packages[@]}"; do
-    apt-cache "${apt_options[@]}" show "$pin" >/dev/null 2>&1 ||
-        fail "Debian's archive no longer has $pin (available: $(apt-cache "${apt_options[@]}" madison "${pin%%=*}" |
-            awk '{print $3}' | tr '\n' ' ')); update the pins in $0"
+    available=$(apt-cache "${apt_options[@]}" madison "${pin%%=*}" | awk '{print $3}' | sort -u | tr '\n' ' ')
+    grep -qwF -- "${pin#*=}" <<<"$available" ||
+        fail "Debian's archive no longer has $pin (it has: ${available:-nothing}); update the pins in $0"
 done
 (cd "$work/debs" && apt-get "${apt_options[@]}" -q download "${vkd3d_packages[@]}" "${mesa_packages[@]}") \
     >"$work/download.log" 2>&1 || {
