@@ -69,9 +69,9 @@ run_wine() {
 }
 
 # vkd3d 1.6 (Wine 8) reads every descriptor table as zero on Debian 12's lavapipe (Mesa 22.3,
-# no VK_EXT_descriptor_indexing); Mesa 25's lavapipe from install-dxbc-tools.sh has it, and
-# virtual_heaps is the descriptor-heap model vkd3d needs for it there. The kernels: the DXBC
-# beside the build (Wine maps Z: to /).
+# no VK_EXT_descriptor_indexing); Mesa 25's lavapipe from install-dxbc-tools.sh has it.
+# virtual_heaps: vkd3d's other descriptor-heap model works too, but each kernel test then took
+# 5 to 20 s instead of under 1 s. The kernels: the DXBC beside the build (Wine maps Z: to /).
 export VK_ICD_FILENAMES=$tools/lvp_icd.json VKD3D_CONFIG=virtual_heaps
 export LUMINA_SHADER_DIR="Z:$build/shaders"
 

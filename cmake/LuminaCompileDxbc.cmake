@@ -6,7 +6,7 @@
 #    every loop it can, which took minutes and gigabytes per kernel (bvh/bvh_raycast_test: 5 s
 #    of CPU, 0.04 s with [loop]; screen_probes/probe_ray_shading: over 3 minutes). Loops the
 #    source marks [unroll] stay unrolled. DXC and glslang never see this (their SPIR-V and
-#    DXIL are unchanged).
+#    DXIL are unchanged). The kernels have no do-while loops, whose `while` this would break.
 # 2. vkd3d-compiler compiles the expanded source to a DXBC container (shader model 5.1).
 # Any failure stops the build with the compiler's messages.
 set(expanded "${OUTPUT}.hlsl")
