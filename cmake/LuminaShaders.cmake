@@ -8,7 +8,7 @@
 # and is compiled at build time to SPIR-V (DXC when found, else glslangValidator
 # with --hlsl-iomap and the register shifts of docs/binding.md), then checked with
 # spirv-val; to DXIL as well where DXC is found, and to DXBC (shader model 5.1, what Wine's
-# vkd3d takes) where vkd3d-compiler 1.10 or newer is found (LUMINA_VKD3D_COMPILER;
+# vkd3d takes) where vkd3d-compiler (2.1 tested) is found (LUMINA_VKD3D_COMPILER;
 # .ci/install-dxbc-tools.sh puts it in /opt/lumina/d3d12-tools/bin). A kernel that fails
 # fails the build.
 #
@@ -43,7 +43,7 @@ if(LUMINA_VKD3D_COMPILER)
     OUTPUT_VARIABLE _lumina_vkd3d_sources ERROR_QUIET RESULT_VARIABLE _lumina_vkd3d_result)
   if(NOT _lumina_vkd3d_result EQUAL 0 OR NOT _lumina_vkd3d_sources MATCHES "hlsl")
     message(WARNING "${LUMINA_VKD3D_COMPILER} cannot compile HLSL (Debian 12's vkd3d-compiler is 1.2):"
-      " no DXBC. Run .ci/install-dxbc-tools.sh, or set LUMINA_VKD3D_COMPILER to vkd3d-compiler 1.10+")
+      " no DXBC. Run .ci/install-dxbc-tools.sh, or set LUMINA_VKD3D_COMPILER to vkd3d-compiler 2.1")
   elseif(NOT LUMINA_GLSLANG)
     message(WARNING "DXBC needs glslangValidator too (it preprocesses for vkd3d-compiler): no DXBC")
   else()
@@ -57,8 +57,13 @@ endif()
 if(NOT LUMINA_SPIRV_VAL)
   message(FATAL_ERROR "spirv-val not found: install spirv-tools")
 endif()
+if(LUMINA_DXBC_COMPILER)
+  set(_lumina_dxbc_status "${LUMINA_DXBC_COMPILER}")
+else()
+  set(_lumina_dxbc_status "none (.ci/install-dxbc-tools.sh)")
+endif()
 message(STATUS "Lumina kernels: SPIR-V with ${LUMINA_DXC}${LUMINA_GLSLANG}, DXIL ${LUMINA_DXC},"
-  " DXBC ${LUMINA_DXBC_COMPILER}")
+  " DXBC ${_lumina_dxbc_status}")
 
 # Register shifts shared by both SPIR-V compilers (docs/binding.md): b -> n, t -> 100+n,
 # u -> 200+n, s -> 300+n, in every register space (space N becomes descriptor set N).
