@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs every Debian 12 package that Lumina's build, tests and tools need.
 # Safe to run twice: apt-get install is idempotent. Works as root or with sudo.
+# Then .ci/install-dxbc-tools.sh: vkd3d-compiler (DXBC) and Mesa 25's lavapipe for the D3D12
+# run under Wine, unpacked into /opt/lumina/d3d12-tools (nothing installed system-wide).
 set -euo pipefail
 
 packages=(
@@ -31,9 +33,10 @@ for p in "${packages[@]}"; do
 done
 if [ "${#missing[@]}" -eq 0 ]; then
   echo "install-deps: all ${#packages[@]} packages present"
-  exit 0
+else
+  echo "install-deps: installing ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo_cmd[@]}" apt-get update -q
+  "${sudo_cmd[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
 fi
-echo "install-deps: installing ${missing[*]}"
-export DEBIAN_FRONTEND=noninteractive
-"${sudo_cmd[@]}" apt-get update -q
-"${sudo_cmd[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
+"$(dirname "$0")/install-dxbc-tools.sh"

@@ -7,19 +7,49 @@
 #
 # and is compiled at build time to SPIR-V (DXC when found, else glslangValidator
 # with --hlsl-iomap and the register shifts of docs/binding.md), then checked with
-# spirv-val; to DXIL as well where DXC is found. A kernel that fails fails the build.
+# spirv-val; to DXIL as well where DXC is found, and to DXBC (shader model 5.1, what Wine's
+# vkd3d takes) where vkd3d-compiler (2.1 tested) is found (LUMINA_VKD3D_COMPILER;
+# .ci/install-dxbc-tools.sh puts it in /opt/lumina/d3d12-tools/bin). A kernel that fails
+# fails the build.
+#
+# A source whose kernels vkd3d-shader cannot compile says so, with the reason, in a line
+#
+#   // lumina-no-dxbc: vkd3d-shader has no RWByteAddressBuffer.Load
+#
+# and gets <name>.dxbc.unavailable (the reason, which the loader and the tests report)
+# instead of <name>.dxbc. Everything else differing between compilers lives in
+# shaders/common/ behind macros (LUMINA_SPIRV, LUMINA_DXBC; docs/d3d12.md).
 #
 # Kernel names are the source path under shaders/ without ".hlsl", plus ".<entry>"
 # when the entry point is not "main": shaders/rhi_tests/fill.hlsl -> "rhi_tests/fill",
 # its vsMain entry -> "rhi_tests/fill.vsMain". Outputs land in ${LUMINA_SHADER_OUTPUT_DIR}
-# as <name>.spv and <name>.dxil, where the runtime loads them by name.
+# as <name>.spv, <name>.dxil and <name>.dxbc, where the runtime loads them by name.
 
 set(LUMINA_SHADER_OUTPUT_DIR ${CMAKE_BINARY_DIR}/shaders CACHE INTERNAL "compiled kernels")
+set(_LUMINA_SHADERS_DIR ${CMAKE_CURRENT_LIST_DIR})
 
 find_program(LUMINA_DXC NAMES dxc dxc.exe
   HINTS "$ENV{VULKAN_SDK}/bin" "$ENV{VULKAN_SDK}/Bin" "$ENV{DXC_DIR}")
 find_program(LUMINA_GLSLANG NAMES glslangValidator glslang)
 find_program(LUMINA_SPIRV_VAL NAMES spirv-val HINTS "$ENV{VULKAN_SDK}/bin")
+# vkd3d-compiler for DXBC: the folder of .ci/install-dxbc-tools.sh first. Debian 12's own
+# vkd3d-compiler (1.2) cannot read HLSL, so whichever is found must list hlsl as a source.
+# -DLUMINA_VKD3D_COMPILER=OFF builds no DXBC.
+find_program(LUMINA_VKD3D_COMPILER NAMES vkd3d-compiler
+  HINTS "$ENV{LUMINA_D3D12_TOOLS_DIR}/bin" /opt/lumina/d3d12-tools/bin)
+set(LUMINA_DXBC_COMPILER "")
+if(LUMINA_VKD3D_COMPILER)
+  execute_process(COMMAND ${LUMINA_VKD3D_COMPILER} --print-source-types
+    OUTPUT_VARIABLE _lumina_vkd3d_sources ERROR_QUIET RESULT_VARIABLE _lumina_vkd3d_result)
+  if(NOT _lumina_vkd3d_result EQUAL 0 OR NOT _lumina_vkd3d_sources MATCHES "hlsl")
+    message(WARNING "${LUMINA_VKD3D_COMPILER} cannot compile HLSL (Debian 12's vkd3d-compiler is 1.2):"
+      " no DXBC. Run .ci/install-dxbc-tools.sh, or set LUMINA_VKD3D_COMPILER to vkd3d-compiler 2.1")
+  elseif(NOT LUMINA_GLSLANG)
+    message(WARNING "DXBC needs glslangValidator too (it preprocesses for vkd3d-compiler): no DXBC")
+  else()
+    set(LUMINA_DXBC_COMPILER ${LUMINA_VKD3D_COMPILER})
+  endif()
+endif()
 
 if(NOT LUMINA_DXC AND NOT LUMINA_GLSLANG)
   message(FATAL_ERROR "No HLSL compiler: install glslang-tools (Debian) or DXC")
@@ -27,7 +57,13 @@ endif()
 if(NOT LUMINA_SPIRV_VAL)
   message(FATAL_ERROR "spirv-val not found: install spirv-tools")
 endif()
-message(STATUS "Lumina kernels: SPIR-V with ${LUMINA_DXC}${LUMINA_GLSLANG}, DXIL ${LUMINA_DXC}")
+if(LUMINA_DXBC_COMPILER)
+  set(_lumina_dxbc_status "${LUMINA_DXBC_COMPILER}")
+else()
+  set(_lumina_dxbc_status "none (.ci/install-dxbc-tools.sh)")
+endif()
+message(STATUS "Lumina kernels: SPIR-V with ${LUMINA_DXC}${LUMINA_GLSLANG}, DXIL ${LUMINA_DXC},"
+  " DXBC ${_lumina_dxbc_status}")
 
 # Register shifts shared by both SPIR-V compilers (docs/binding.md): b -> n, t -> 100+n,
 # u -> 200+n, s -> 300+n, in every register space (space N becomes descriptor set N).
@@ -36,7 +72,7 @@ set(LUMINA_SHIFT_U 200)
 set(LUMINA_SHIFT_S 300)
 set(LUMINA_MAX_SPACES 4)
 
-function(_lumina_stage_profile stage out_glslang out_dxc)
+function(_lumina_stage_profile stage out_glslang out_dxc out_dxbc)
   if(stage STREQUAL "cs")
     set(${out_glslang} comp PARENT_SCOPE)
   elseif(stage STREQUAL "vs")
@@ -47,6 +83,31 @@ function(_lumina_stage_profile stage out_glslang out_dxc)
     message(FATAL_ERROR "unknown kernel stage '${stage}' (cs, vs or ps)")
   endif()
   set(${out_dxc} ${stage}_6_0 PARENT_SCOPE)
+  set(${out_dxbc} ${stage}_5_1 PARENT_SCOPE)
+endfunction()
+
+# DXBC: glslangValidator preprocesses (vkd3d-compiler has no -I or -D and resolves includes
+# against its working folder only), then vkd3d-compiler compiles the result, kept beside the
+# output as <name>.dxbc.hlsl so that error lines can be read. Depending on the .spv reruns it
+# whenever an included file changes (the .spv has the depfile).
+function(_lumina_add_dxbc_kernel root src name entry glslang_stage profile spv no_dxbc outputs_var)
+  set(unavailable "${LUMINA_SHADER_OUTPUT_DIR}/${name}.dxbc.unavailable")
+  if(no_dxbc)
+    file(WRITE "${unavailable}" "${no_dxbc}\n")
+    return()
+  endif()
+  file(REMOVE "${unavailable}")
+  set(dxbc "${LUMINA_SHADER_OUTPUT_DIR}/${name}.dxbc")
+  add_custom_command(
+    OUTPUT ${dxbc}
+    COMMAND ${CMAKE_COMMAND} -DGLSLANG=${LUMINA_GLSLANG} -DVKD3D=${LUMINA_DXBC_COMPILER}
+      -DSTAGE=${glslang_stage} -DPROFILE=${profile} -DENTRY=${entry} -DROOT=${root}
+      -DSOURCE=${src} -DOUTPUT=${dxbc} -P ${_LUMINA_SHADERS_DIR}/LuminaCompileDxbc.cmake
+    DEPENDS ${src} ${spv} ${_LUMINA_SHADERS_DIR}/LuminaCompileDxbc.cmake
+    COMMENT "HLSL ${name} -> DXBC"
+    VERBATIM)
+  list(APPEND ${outputs_var} ${dxbc})
+  set(${outputs_var} ${${outputs_var}} PARENT_SCOPE)
 endfunction()
 
 # lumina_add_kernels(TARGET <custom target> ROOT <shaders dir>)
@@ -59,6 +120,8 @@ function(lumina_add_kernels)
     string(REGEX REPLACE "\\.hlsl$" "" stem "${rel}")
     set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS "${src}")
     file(STRINGS "${src}" decls REGEX "^// lumina-kernel: ")
+    file(STRINGS "${src}" no_dxbc REGEX "^// lumina-no-dxbc: ")
+    string(REGEX REPLACE "^// lumina-no-dxbc: " "" no_dxbc "${no_dxbc}")
     foreach(decl IN LISTS decls)
       string(REGEX MATCH "^// lumina-kernel: ([a-z][a-z]) ([A-Za-z_][A-Za-z0-9_]*)" _ "${decl}")
       set(stage "${CMAKE_MATCH_1}")
@@ -70,7 +133,7 @@ function(lumina_add_kernels)
       if(NOT entry STREQUAL "main")
         set(name "${stem}.${entry}")
       endif()
-      _lumina_stage_profile(${stage} glslang_stage dxc_profile)
+      _lumina_stage_profile(${stage} glslang_stage dxc_profile dxbc_profile)
       set(spv "${LUMINA_SHADER_OUTPUT_DIR}/${name}.spv")
       set(dep "${LUMINA_SHADER_OUTPUT_DIR}/${name}.spv.d")
       get_filename_component(outdir "${spv}" DIRECTORY)
@@ -110,6 +173,10 @@ function(lumina_add_kernels)
           COMMENT "HLSL ${name} -> DXIL"
           VERBATIM)
         list(APPEND outputs ${dxil})
+      endif()
+      if(LUMINA_DXBC_COMPILER)
+        _lumina_add_dxbc_kernel("${ARG_ROOT}" "${src}" "${name}" "${entry}" ${glslang_stage}
+          ${dxbc_profile} "${spv}" "${no_dxbc}" outputs)
       endif()
     endforeach()
   endforeach()

@@ -1,11 +1,12 @@
 #include "rhi/shader_library.h"
 
+#include "rhi/error.h"
+
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <string>
 #include <vector>
-
-#include "rhi/error.h"
 
 #if defined(_WIN32)
 #include <windows.h>
@@ -19,7 +20,8 @@ std::filesystem::path executableDirectory() {
 #if defined(_WIN32)
     wchar_t buffer[MAX_PATH];
     const DWORD length = GetModuleFileNameW(nullptr, buffer, MAX_PATH);
-    return length ? std::filesystem::path(std::wstring(buffer, length)).parent_path() : std::filesystem::path();
+    return length ? std::filesystem::path(std::wstring(buffer, length)).parent_path()
+                  : std::filesystem::path();
 #else
     std::error_code error;
     const auto exe = std::filesystem::read_symlink("/proc/self/exe", error);
@@ -29,11 +31,23 @@ std::filesystem::path executableDirectory() {
 
 std::string_view extensionFor(ShaderFormat format) {
     switch (format) {
-    case ShaderFormat::Spirv: return ".spv";
-    case ShaderFormat::Dxil: return ".dxil";
-    case ShaderFormat::Dxbc: return ".dxbc";
+    case ShaderFormat::Spirv:
+        return ".spv";
+    case ShaderFormat::Dxil:
+        return ".dxil";
+    case ShaderFormat::Dxbc:
+        return ".dxbc";
     }
     return ".bin";
+}
+
+// The formats a device takes, best first. A D3D12 device with shader model 6 (DXIL) runs
+// DXBC too, so a kernel the build made only as DXBC still loads there.
+std::vector<ShaderFormat> acceptedFormats(ShaderFormat deviceFormat) {
+    if (deviceFormat == ShaderFormat::Dxil) {
+        return {ShaderFormat::Dxil, ShaderFormat::Dxbc};
+    }
+    return {deviceFormat};
 }
 
 } // namespace
@@ -54,17 +68,48 @@ std::filesystem::path defaultShaderDirectory() {
 ShaderLibrary::ShaderLibrary(IDevice& device, std::filesystem::path directory)
     : device_(device), directory_(std::move(directory)) {}
 
+std::filesystem::path ShaderLibrary::locate(std::string_view name) const {
+    for (const ShaderFormat format : acceptedFormats(device_.capabilities().shaderFormat)) {
+        auto path = directory_ / (std::string(name) + std::string(extensionFor(format)));
+        if (std::filesystem::is_regular_file(path)) {
+            return path;
+        }
+    }
+    return {};
+}
+
+std::string ShaderLibrary::unavailableReason(std::string_view name) const {
+    if (!locate(name).empty()) {
+        return {};
+    }
+    std::string tried;
+    for (const ShaderFormat format : acceptedFormats(device_.capabilities().shaderFormat)) {
+        const std::string file = std::string(name) + std::string(extensionFor(format));
+        tried += (tried.empty() ? "" : " or ") + file;
+        // The build's reason for not making this kernel in this format, one line.
+        std::ifstream reasonFile(directory_ / (file + ".unavailable"));
+        if (std::string reason; reasonFile && std::getline(reasonFile, reason) && !reason.empty()) {
+            return "kernel '" + std::string(name) + "' has no " + file + ": " + reason;
+        }
+    }
+    return "kernel '" + std::string(name) + "' not found: no " + tried + " in " + directory_.string() +
+           " (set LUMINA_SHADER_DIR to the build's shaders folder)";
+}
+
 ShaderHandle ShaderLibrary::get(std::string_view name, ShaderStage stage) {
     if (const auto it = cache_.find(name); it != cache_.end()) {
         return it->second;
     }
-    const auto path = directory_ / (std::string(name) + std::string(extensionFor(device_.capabilities().shaderFormat)));
+    const auto path = locate(name);
+    if (path.empty()) {
+        throw Error(unavailableReason(name));
+    }
     std::ifstream file(path, std::ios::binary);
     if (!file) {
-        throw Error("kernel '" + std::string(name) + "' not found: cannot open " + path.string() +
-                    " (set LUMINA_SHADER_DIR to the build's shaders folder)");
+        throw Error("kernel '" + std::string(name) + "': cannot open " + path.string());
     }
-    const std::vector<uint8_t> bytecode((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    const std::vector<uint8_t> bytecode((std::istreambuf_iterator<char>(file)),
+                                        std::istreambuf_iterator<char>());
     if (bytecode.empty()) {
         throw Error("kernel '" + std::string(name) + "' is empty: " + path.string());
     }

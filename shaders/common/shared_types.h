@@ -10,6 +10,8 @@
 //   LUMINA_PRECISE                      HLSL `precise` (no FMA contraction); nothing in C++, where
 //                                       ISO mode (-std=c++20) already keeps a*b-c*d uncontracted
 //   LUMINA_STATIC_ASSERT_SIZE(T, n)     checks sizeof(T) == n and 16-byte alignment in C++ only
+//   luminaReverseBits(v)                reversebits for C++; with LUMINA_DXBC (vkd3d-shader), isnan
+//                                       and reversebits themselves are defined at the end
 //
 // Rules for shared structs (docs/architecture.md, "Shared structs"): float4/uint4 members only (16-byte
 // aligned, identical under std430 and D3D structured-buffer packing), uint instead of bool,
@@ -66,6 +68,29 @@ using std::sqrt;
 #define LUMINA_PRECISE precise
 #define LUMINA_STATIC_ASSERT_SIZE(T, n)
 
+#endif
+
+LUMINA_GPU_NAMESPACE_BEGIN
+
+// reversebits in plain integer arithmetic, for the compilers without it: C++, and
+// vkd3d-shader's HLSL compiler (the DXBC build, below).
+LUMINA_INLINE uint luminaReverseBits(uint v) {
+    v = ((v >> 1u) & 0x55555555u) | ((v & 0x55555555u) << 1u);
+    v = ((v >> 2u) & 0x33333333u) | ((v & 0x33333333u) << 2u);
+    v = ((v >> 4u) & 0x0F0F0F0Fu) | ((v & 0x0F0F0F0Fu) << 4u);
+    v = ((v >> 8u) & 0x00FF00FFu) | ((v & 0x00FF00FFu) << 8u);
+    return (v >> 16u) | (v << 16u);
+}
+
+LUMINA_GPU_NAMESPACE_END
+
+// vkd3d-shader's HLSL compiler (LUMINA_DXBC, docs/d3d12.md) lacks isnan and reversebits, and
+// cannot emit isinf for shader model 5: the same operations on the bits, for scalars and
+// vectors alike, under the intrinsics' names, so kernels call them with every compiler.
+#if !defined(__cplusplus) && defined(LUMINA_DXBC)
+#define isnan(v) ((asuint(v) & 0x7FFFFFFFu) > 0x7F800000u)
+#define isinf(v) ((asuint(v) & 0x7FFFFFFFu) == 0x7F800000u)
+#define reversebits(v) luminaReverseBits(v)
 #endif
 
 #endif

@@ -1,4 +1,5 @@
 // lumina-kernel: cs main
+// lumina-no-dxbc: vkd3d-shader 2.1's HLSL compiler has no RWByteAddressBuffer.Load (raw UAV reads)
 // Read-modify-write of one buffer, for UAV -> UAV chains: data[i] += addend + i.
 #include "common/bindings.hlsli"
 #include "rhi_tests/rhi_tests_shared.h"

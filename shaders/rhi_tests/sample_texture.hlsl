@@ -25,7 +25,9 @@ static const float3 kFaceAxes[6] = {float3(1, 0, 0), float3(-1, 0, 0), float3(0,
     const float2 uv = (float2(texel) + 0.5) / float2(gConstants.width, gConstants.height);
     SampleResult result;
     result.sampled2D = gTexture.SampleLevel(gPoint, uv, 0);
-    result.loaded2D = gTexture.Load(int3(texel, 0));
+    // texel as it is, not int3(texel, 0): vkd3d-shader 2.1 (DXBC) confuses that int cast with the
+    // float cast above and loads at the float's bits (docs/d3d12.md).
+    result.loaded2D = gTexture[texel];
     result.arrayLayer = gArray.Load(int4(0, 0, probe % gConstants.layers, 0));
     result.cubeFace = gCube.SampleLevel(gPoint, kFaceAxes[probe % 6], 0);
     gResults[probe] = result;

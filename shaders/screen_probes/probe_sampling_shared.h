@@ -21,16 +21,9 @@ namespace lumina::gpu {
 inline float sp_frac(float x) {
     return x - std::floor(x);
 }
-inline uint sp_reversebits(uint v) {
-    v = ((v >> 1u) & 0x55555555u) | ((v & 0x55555555u) << 1u);
-    v = ((v >> 2u) & 0x33333333u) | ((v & 0x33333333u) << 2u);
-    v = ((v >> 4u) & 0x0F0F0F0Fu) | ((v & 0x0F0F0F0Fu) << 4u);
-    v = ((v >> 8u) & 0x00FF00FFu) | ((v & 0x00FF00FFu) << 8u);
-    return (v >> 16u) | (v << 16u);
-}
 } // namespace lumina::gpu
 #define LUMINA_SP_FRAC sp_frac
-#define LUMINA_SP_REVERSEBITS sp_reversebits
+#define LUMINA_SP_REVERSEBITS luminaReverseBits // shared_types.h
 #else
 #define LUMINA_SP_FRAC frac
 #define LUMINA_SP_REVERSEBITS reversebits

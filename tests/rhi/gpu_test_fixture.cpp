@@ -58,18 +58,28 @@ std::string GpuTestFixture::kernelsUnavailable() {
         return {};
     }
     const rhi::ShaderFormat format = device().capabilities().shaderFormat;
-    const std::string extension = format == rhi::ShaderFormat::Dxil ? ".dxil" : ".dxbc";
+    // A shader-model-6 device takes DXIL and DXBC; the others DXBC only.
     std::error_code error;
     for (std::filesystem::recursive_directory_iterator it(shaders().directory(), error), end;
          !error && it != end; it.increment(error)) {
-        if (it->path().extension() == extension) {
+        const auto extension = it->path().extension();
+        if (extension == ".dxbc" || (extension == ".dxil" && format == rhi::ShaderFormat::Dxil)) {
             return {};
         }
     }
     if (format == rhi::ShaderFormat::Dxbc) {
-        return "no DXIL on this path (vkd3d accepts DXBC only)";
+        return "no DXBC kernels in " + shaders().directory().string() +
+               " (this device takes DXBC only; the build found no vkd3d-compiler: .ci/install-dxbc-tools.sh)";
     }
-    return "no DXIL kernels in " + shaders().directory().string() + " (the build found no DXC)";
+    return "no DXIL or DXBC kernels in " + shaders().directory().string() +
+           " (the build found neither DXC nor vkd3d-compiler)";
+}
+
+std::string GpuTestFixture::kernelUnavailable(std::string_view name) {
+    if (device().api() != rhi::Api::D3D12) {
+        return {};
+    }
+    return shaders().unavailableReason(name);
 }
 
 std::vector<std::string> GpuTestFixture::validationMessages() const {

@@ -68,6 +68,7 @@ TEST_P(SynchronizationValidationTest, MissingBarrierBetweenDispatchesIsReported)
 
 TEST_P(SynchronizationValidationTest, ExplicitUavBarrierSilencesIt) {
     LUMINA_REQUIRE_KERNELS();
+    LUMINA_REQUIRE_KERNEL("rhi_tests/accumulate");
     const ComputeKernel kernel = loadComputeKernel(
         "rhi_tests/accumulate", {{rhi::BindingType::RawBufferUAV, 0}}, sizeof(ChainConstants));
     rhi::BufferHandle data =
