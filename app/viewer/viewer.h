@@ -86,7 +86,6 @@ private:
     rhi::IDevice& device_;
     ViewerOptions options_;
     scene::Scene scene_;
-    SceneEdits edits_;
     scene::Bounds sceneBounds_;
     float sceneDiagonal_ = 1.0f;
     GlfwWindow window_;
@@ -106,6 +105,7 @@ private:
     std::unique_ptr<gi::GpuScene> gpuScene_;
     std::unique_ptr<gi::FrameRenderer> renderer_;
     FlyCamera camera_;
+    SceneEdits edits_; // after scene_: made from it
     ViewerState state_;
     MemoryUse memory_;
     std::unique_ptr<UiRenderer> ui_;

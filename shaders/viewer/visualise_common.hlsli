@@ -74,11 +74,14 @@ float3 slicePoint(float2 uv) {
     const uint axis = gVisualise.slice.x;
     const uint across = axis == LUMINA_VISUALISE_AXIS_X ? 2u : 0u;
     const uint up = axis == LUMINA_VISUALISE_AXIS_Y ? 2u : 1u;
-    float3 p = float3(0.0, 0.0, 0.0);
-    p[axis] = gVisualise.sliceMin.w;
-    p[across] = lerp(gVisualise.sliceMin[across], gVisualise.sliceMax[across], uv.x);
-    p[up] = lerp(gVisualise.sliceMax[up], gVisualise.sliceMin[up], uv.y); // +up at the top
-    return p;
+    const float onAxis = gVisualise.sliceMin.w;
+    const float onAcross = lerp(gVisualise.sliceMin[across], gVisualise.sliceMax[across], uv.x);
+    const float onUp = lerp(gVisualise.sliceMax[up], gVisualise.sliceMin[up], uv.y); // +up at the top
+    // Built by selection, not by storing to p[axis]: vkd3d's DXBC compiler cannot store to a
+    // vector component chosen at run time.
+    return float3(axis == 0u ? onAxis : (across == 0u ? onAcross : onUp),
+                  axis == 1u ? onAxis : (across == 1u ? onAcross : onUp),
+                  axis == 2u ? onAxis : (across == 2u ? onAcross : onUp));
 }
 
 #endif

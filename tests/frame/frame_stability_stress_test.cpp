@@ -8,10 +8,10 @@
 // Bounds are the figures measured on lavapipe when this was written, with margin; the figures
 // are in the comments and in docs/gi_tests.md.
 #include "gi/measure/metrics.h"
-#include "gi/scene/scene_animation.h"
 #include "gi/scene/scene_loader.h"
 #include "shaders/screen_probes/screen_probe_shared.h"
 #include "tests/frame/frame_harness.h"
+#include "tests/frame/probe_health.h"
 #include "tests/rhi/gpu_test_fixture.h"
 
 #include <algorithm>
@@ -41,48 +41,6 @@ constexpr double kMaxFrameToFrameRelMse = 1e-3;
 // Measured: at most 0.0022 (see docs/gi_tests.md).
 constexpr uint32_t kWanderFrom = 200;
 constexpr double kMaxWanderRelMse = 0.02;
-
-// Non-finite values the screen probes hold where they are meaningful: the valid probes' radiance
-// history and irradiance tiles (invalid probes' entries are never written), and every pixel of
-// the screen irradiance.
-struct ProbeHealth {
-    uint32_t validProbes = 0;
-    uint64_t nonFiniteHistory = 0;
-    uint64_t nonFiniteIrradiance = 0;
-    uint64_t nonFiniteScreen = 0;
-};
-
-bool finite(const gpu::float4& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
-}
-
-ProbeHealth probeHealth(rhi::IDevice& device, FrameHarness& h) {
-    const gi::ScreenProbeGather& gather = h.lumen().screenProbes();
-    const gi::ScreenProbeResources& r = gather.resources();
-    const auto probes = rhi::readBufferAs<gpu::ScreenProbe>(device, *r.probes[gather.current()]);
-    const auto history = rhi::readBufferAs<gpu::float4>(device, *r.history[gather.current()]);
-    const image::Image atlas = h.read(r.irradiance);
-    ProbeHealth health;
-    for (uint32_t p = 0; p < r.probeCount; ++p) {
-        if (probes[p].info.x != LUMINA_SP_PROBE_VALID) {
-            continue;
-        }
-        ++health.validProbes;
-        for (uint32_t t = 0; t < LUMINA_SP_PROBE_TEXELS; ++t) {
-            health.nonFiniteHistory += finite(history[size_t(p) * LUMINA_SP_PROBE_TEXELS + t]) ? 0 : 1;
-        }
-        const uint32_t tileX = (p % r.gridWidth) * LUMINA_SP_IRRADIANCE_TILE;
-        const uint32_t tileY = (p / r.gridWidth) * LUMINA_SP_IRRADIANCE_TILE;
-        for (uint32_t y = tileY; y < tileY + LUMINA_SP_IRRADIANCE_TILE; ++y) {
-            for (uint32_t x = tileX; x < tileX + LUMINA_SP_IRRADIANCE_TILE; ++x) {
-                const image::Rgb e = atlas.rgbAt(x, y);
-                health.nonFiniteIrradiance += std::isfinite(e.r + e.g + e.b) ? 0 : 1;
-            }
-        }
-    }
-    health.nonFiniteScreen = measure::countNonFinite(h.read(h.renderer().indirect())).total();
-    return health;
-}
 
 TEST_P(FrameStabilityStress, StaticCameraStaysFiniteAndSteadyFor1000Frames) {
     LUMINA_REQUIRE_KERNELS();
@@ -224,58 +182,6 @@ TEST_P(FrameStabilityStress, CameraCutsRecoverWithinAStatedNumberOfFrames) {
                 kScene, kSize, kSize, kRecoveredRelMse, reprojected, reset);
     EXPECT_LE(reprojected, kRecoveryFramesReprojected);
     EXPECT_LE(reset, kRecoveryFramesReset);
-}
-
-// ---- a dynamic scene ----
-
-// atrium_day's sun sweeps from morning towards evening: 1,000 frames (of its 1,200-frame loop, so
-// no jump back to morning) at 32 x 32, low preset, the sun's direction, colour and illuminance
-// changing every frame. Each frame re-renders the sun's shadow map, re-lights every card,
-// restarts radiosity and shortens history (docs/dynamic_scenes.md); nothing may turn non-finite
-// and no frame may jump. Frame-to-frame relMSE measured on lavapipe: see docs/gi_tests.md.
-constexpr uint32_t kDynamicSize = 32;
-constexpr uint32_t kDynamicFrames = 1000;
-constexpr uint32_t kDynamicSettle = 60; // the first frames build up from black
-constexpr double kMaxDynamicStepRelMse = 0.05;
-
-TEST_P(FrameStabilityStress, AtriumDaySunSweepStaysFiniteWithBoundedChangeFor1000Frames) {
-    LUMINA_REQUIRE_KERNELS();
-    const scene::Scene scene = scene::loadScene("atrium_day");
-    ASSERT_FALSE(scene.animation.empty());
-    FrameHarness h(device(), shaders(), scene, {.width = kDynamicSize, .height = kDynamicSize});
-    scene::Scene posed = scene;
-    image::Image previous;
-    double maxStep = 0.0, sumStep = 0.0;
-    uint32_t steps = 0, maxStepFrame = 0;
-    for (uint32_t f = 0; f < kDynamicFrames; ++f) {
-        scene::animateScene(posed, f);
-        h.renderer().applyScene(posed);
-        h.render();
-        image::Image hdr = h.hdr();
-        ASSERT_EQ(measure::countNonFinite(hdr).total(), 0u) << "frame " << f;
-        if (f >= kDynamicSettle) {
-            const double step = measure::relMse(previous, hdr);
-            sumStep += step;
-            ++steps;
-            if (step > maxStep) {
-                maxStep = step;
-                maxStepFrame = f;
-            }
-        }
-        if ((f + 1) % kCheckEvery == 0) {
-            const ProbeHealth health = probeHealth(device(), h);
-            EXPECT_GT(health.validProbes, 0u);
-            EXPECT_EQ(health.nonFiniteHistory, 0u) << "frame " << f;
-            EXPECT_EQ(health.nonFiniteIrradiance, 0u) << "frame " << f;
-            EXPECT_EQ(health.nonFiniteScreen, 0u) << "frame " << f;
-        }
-        previous = std::move(hdr);
-    }
-    std::printf(
-        "atrium_day %ux%u, %u frames: frame-to-frame relMSE from frame %u: mean %.3g, max %.3g (frame %u)\n",
-        kDynamicSize, kDynamicSize, kDynamicFrames, kDynamicSettle, sumStep / std::max(steps, 1u), maxStep,
-        maxStepFrame);
-    EXPECT_LT(maxStep, kMaxDynamicStepRelMse) << "frame " << maxStepFrame;
 }
 
 LUMINA_INSTANTIATE_GPU_TEST(FrameStabilityStress);
