@@ -6,7 +6,7 @@
 #      and counts the frames and GPU ms until it is within relMSE 0.01 of a fresh converged render
 #      of that pose; with the frame cost while moving against static (change_response.csv);
 #   2. per-pass timings while the animation plays (--timings, no validation), per scene at 1920x1080;
-#   3. the README's door strip: the door scene after 60, 120, 180 and 240 frames of its animation;
+#   3. the README's door strip: the door scene after 60, 90, 120, 150 and 180 frames of its animation;
 #   4. the `long` tests (tests/frame/dynamic_stress_test.cpp: 1,000 frames of atrium_day), which
 #      CI leaves out; needs .devbin/tests/dynamic_stress_test.
 # Every result names the device, driver and commit. Writes under $OUT.
@@ -33,7 +33,7 @@ change_frames=${LUMINA_CHANGE_FRAMES:-120}
       --timings-json "$out/t_${scene}_moving.json" --out "/tmp/${scene}_moving.png" 2>&1 | grep -v '^frame '
     echo "exit ${PIPESTATUS[0]}"
   done
-  for frames in 60 120 180 240; do
+  for frames in 60 90 120 150 180; do
     timeout 120 $lumina render door --preset high --size 640x360 --frames "$frames" \
       --out "/tmp/door_strip_$frames.png" 2>&1 | grep -E '^(animation|wrote)'
   done
@@ -43,3 +43,4 @@ change_frames=${LUMINA_CHANGE_FRAMES:-120}
   fi
 } 2>&1 | tee "$out/dynamic_scenes.txt"
 (cd /tmp && tar czf "$out/images.tgz" door_strip_*.png *_moving.png 2>/dev/null)
+(cd "$out" && tar czf results.tgz bench t_*.json && rm -rf bench t_*.json)

@@ -21,14 +21,34 @@ using DynamicStress = GpuTest;
 constexpr uint32_t kCheckEvery = 100;
 
 // atrium_day's sun sweeps from morning towards evening: 1,000 frames (of its 1,200-frame loop, so
-// no jump back to morning) at 32 x 32, low preset, the sun's direction, colour and illuminance
+// no jump back to morning) at 64 x 64, low preset, the sun's direction, colour and illuminance
 // changing every frame. Each frame re-renders the sun's shadow map, re-lights every card,
-// restarts radiosity and shortens history (docs/dynamic_scenes.md); nothing may turn non-finite
-// and no frame may jump. Frame-to-frame relMSE measured on lavapipe: see docs/gi_tests.md.
-constexpr uint32_t kDynamicSize = 32;
+// restarts radiosity and shortens history (docs/dynamic_scenes.md). Nothing may turn non-finite,
+// and the indirect term (what GI adds) may not jump from one frame to the next. The final image
+// may: a sun shadow's edge crossing a pixel changes that pixel many times over, which is the direct
+// light doing its job, so its frame-to-frame change is printed, not bounded. Figures from the lent
+// GPU: docs/gi_tests.md.
+constexpr uint32_t kDynamicSize = 64;
 constexpr uint32_t kDynamicFrames = 1000;
-constexpr uint32_t kDynamicSettle = 60; // the first frames build up from black
-constexpr double kMaxDynamicStepRelMse = 0.05;
+constexpr uint32_t kDynamicSettle = 60;         // the first frames build up from black
+constexpr double kMaxIndirectStepRelMse = 0.02; // measured on the H200: mean 0.0014, max 0.0052
+
+struct StepStats {
+    double sum = 0.0;
+    double max = 0.0;
+    uint32_t count = 0;
+    uint32_t maxFrame = 0;
+
+    void add(double step, uint32_t frame) {
+        sum += step;
+        ++count;
+        if (step > max) {
+            max = step;
+            maxFrame = frame;
+        }
+    }
+    double mean() const { return count ? sum / count : 0.0; }
+};
 
 TEST_P(DynamicStress, AtriumDaySunSweepStaysFiniteWithBoundedChangeFor1000Frames) {
     LUMINA_REQUIRE_KERNELS();
@@ -36,23 +56,19 @@ TEST_P(DynamicStress, AtriumDaySunSweepStaysFiniteWithBoundedChangeFor1000Frames
     ASSERT_FALSE(scene.animation.empty());
     FrameHarness h(device(), shaders(), scene, {.width = kDynamicSize, .height = kDynamicSize});
     scene::Scene posed = scene;
-    image::Image previous;
-    double maxStep = 0.0, sumStep = 0.0;
-    uint32_t steps = 0, maxStepFrame = 0;
+    image::Image previousFinal, previousIndirect;
+    StepStats finalSteps, indirectSteps;
     for (uint32_t f = 0; f < kDynamicFrames; ++f) {
         scene::animateScene(posed, f);
         h.renderer().applyScene(posed);
         h.render();
-        image::Image hdr = h.hdr();
-        ASSERT_EQ(measure::countNonFinite(hdr).total(), 0u) << "frame " << f;
+        image::Image final = h.hdr();
+        image::Image indirect = h.indirect();
+        ASSERT_EQ(measure::countNonFinite(final).total(), 0u) << "frame " << f;
+        ASSERT_EQ(measure::countNonFinite(indirect).total(), 0u) << "frame " << f;
         if (f >= kDynamicSettle) {
-            const double step = measure::relMse(previous, hdr);
-            sumStep += step;
-            ++steps;
-            if (step > maxStep) {
-                maxStep = step;
-                maxStepFrame = f;
-            }
+            finalSteps.add(measure::relMse(previousFinal, final), f);
+            indirectSteps.add(measure::relMse(previousIndirect, indirect), f);
         }
         if ((f + 1) % kCheckEvery == 0) {
             const ProbeHealth health = probeHealth(device(), h);
@@ -61,13 +77,15 @@ TEST_P(DynamicStress, AtriumDaySunSweepStaysFiniteWithBoundedChangeFor1000Frames
             EXPECT_EQ(health.nonFiniteIrradiance, 0u) << "frame " << f;
             EXPECT_EQ(health.nonFiniteScreen, 0u) << "frame " << f;
         }
-        previous = std::move(hdr);
+        previousFinal = std::move(final);
+        previousIndirect = std::move(indirect);
     }
     std::printf(
-        "atrium_day %ux%u, %u frames: frame-to-frame relMSE from frame %u: mean %.3g, max %.3g (frame %u)\n",
-        kDynamicSize, kDynamicSize, kDynamicFrames, kDynamicSettle, sumStep / std::max(steps, 1u), maxStep,
-        maxStepFrame);
-    EXPECT_LT(maxStep, kMaxDynamicStepRelMse) << "frame " << maxStepFrame;
+        "atrium_day %ux%u, %u frames, frame-to-frame relMSE from frame %u: final image mean %.3g, max %.3g "
+        "(frame %u); indirect term mean %.3g, max %.3g (frame %u)\n",
+        kDynamicSize, kDynamicSize, kDynamicFrames, kDynamicSettle, finalSteps.mean(), finalSteps.max,
+        finalSteps.maxFrame, indirectSteps.mean(), indirectSteps.max, indirectSteps.maxFrame);
+    EXPECT_LT(indirectSteps.max, kMaxIndirectStepRelMse) << "frame " << indirectSteps.maxFrame;
 }
 
 LUMINA_INSTANTIATE_GPU_TEST(DynamicStress);
