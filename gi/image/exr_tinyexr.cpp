@@ -54,7 +54,7 @@ Window toWindow(const EXRBox2i& box) {
 // A parsed header, freed with its owner.
 class Header {
 public:
-    explicit Header(const std::filesystem::path& path) : path_(path) {
+    explicit Header(const std::filesystem::path& path) {
         exr_checks::checkFileExists(path);
         InitEXRHeader(&header_);
         EXRVersion version;
@@ -92,7 +92,6 @@ public:
     }
 
 private:
-    std::filesystem::path path_;
     EXRHeader header_;
     bool parsed_ = false;
 };
