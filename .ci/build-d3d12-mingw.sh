@@ -1,16 +1,20 @@
 #!/usr/bin/env bash
 # The Direct3D 12 backend in CI, without Windows:
-#  1. cross-compiles lumina_rhi_d3d12, the RHI conformance tests and lumina.exe for Windows
-#     with MinGW-w64, warnings as errors, so the backend can never rot;
-#  2. runs the conformance tests against D3D12 under Wine, whose d3d12.dll is vkd3d on
-#     Vulkan (lavapipe here), kernels included: vkd3d takes DXBC only, which the build makes
-#     with vkd3d-compiler, and needs Mesa 25's lavapipe (VK_EXT_descriptor_indexing), both
-#     from .ci/install-dxbc-tools.sh (/opt/lumina/d3d12-tools, or $LUMINA_D3D12_TOOLS_DIR).
-#     A test that cannot run there says why in its skip message (docs/d3d12.md lists them).
+#  1. cross-compiles the whole product for Windows with MinGW-w64, warnings as errors: every
+#     library of rhi/, rhi_d3d12/ and gi/, lumina.exe with all its commands, lumina-viewer.exe
+#     (GLFW and Dear ImGui compiled from Debian's source packages, .ci/fetch-debian-sources.sh)
+#     and every test executable, so none of it can rot on Windows; every kernel is compiled to
+#     DXBC with vkd3d-compiler;
+#  2. runs lumina.exe (--help, info, compare) under Wine, and the RHI conformance tests against
+#     D3D12, whose d3d12.dll is vkd3d on Vulkan (lavapipe here), kernels included: vkd3d takes
+#     DXBC only and needs Mesa 25's lavapipe (VK_EXT_descriptor_indexing), both from
+#     .ci/install-dxbc-tools.sh (/opt/lumina/d3d12-tools, or $LUMINA_D3D12_TOOLS_DIR). A test
+#     that cannot run there says why in its skip message (docs/d3d12.md lists them).
 # Exits non-zero when the build or any test fails. Packages: .ci/install-deps.sh
-# (g++-mingw-w64-x86-64, directx-headers-dev, googletest, wine64, xvfb, xauth, and
-# vulkan-validationlayers and mesa-vulkan-drivers, which the Vulkan build needs too; it also
-# runs .ci/install-dxbc-tools.sh).
+# (g++-mingw-w64-x86-64, directx-headers-dev, googletest, libtinyexr-dev, libz-mingw-w64-dev,
+# dpkg-dev, wine64, xvfb, xauth, and vulkan-validationlayers and mesa-vulkan-drivers, which the
+# Vulkan build needs too; it also runs .ci/install-dxbc-tools.sh). ccache is used when installed
+# (LUMINA_CCACHE=0: not).
 #
 #   .ci/build-d3d12-mingw.sh              # build-mingw/ beside the sources
 #   LUMINA_MINGW_BUILD_DIR=/tmp/b JOBS=2 .ci/build-d3d12-mingw.sh
@@ -42,14 +46,33 @@ done
 tools=${LUMINA_D3D12_TOOLS_DIR:-/opt/lumina/d3d12-tools}
 [ -x "$tools/bin/vkd3d-compiler" ] && [ -f "$tools/lvp_icd.json" ] ||
     fail "vkd3d-compiler and Mesa 25's lavapipe missing in $tools (run .ci/install-dxbc-tools.sh)"
+[ -f /usr/include/tinyexr.h ] || fail "tinyexr missing (apt-get install libtinyexr-dev)"
+[ -f /usr/x86_64-w64-mingw32/lib/libz.a ] || fail "zlib for MinGW-w64 missing (apt-get install libz-mingw-w64-dev)"
+
+echo "== vcpkg.json and CMakePresets.json against the build's find_package calls"
+python3 "$root/.ci/check-vcpkg-manifest.py"
+echo "== Debian sources of GLFW and Dear ImGui (for lumina-viewer.exe)"
+debian_sources=${LUMINA_DEBIAN_SOURCES:-$build/debian-sources}
+"$root/.ci/fetch-debian-sources.sh" "$debian_sources"
+launcher=()
+if [ "${LUMINA_CCACHE:-1}" != 0 ] && command -v ccache >/dev/null 2>&1; then
+    launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
+fi
 
 echo "== configure ($build)"
 cmake -S "$root" -B "$build" -G Ninja \
     -DCMAKE_TOOLCHAIN_FILE="$root/cmake/toolchains/mingw-w64.cmake" \
     -DCMAKE_BUILD_TYPE=Release \
-    -DLUMINA_D3D12=ON -DLUMINA_VULKAN=OFF -DLUMINA_WERROR=ON -DLUMINA_TESTS=ON
-echo "== build"
-cmake --build "$build" -j "$jobs" --target lumina_rhi_d3d12 lumina rhi_conformance rhi_state_tracker_test
+    -DLUMINA_D3D12=ON -DLUMINA_VULKAN=OFF -DLUMINA_WERROR=ON -DLUMINA_TESTS=ON \
+    -DLUMINA_DEBIAN_SOURCES_DIR="$debian_sources" "${launcher[@]}"
+echo "== build (everything)"
+cmake --build "$build" -j "$jobs"
+# The whole product, not a part of it: a target that configured itself away fails here.
+for exe in app/lumina.exe app/viewer/lumina-viewer.exe tests/rhi/rhi_conformance.exe \
+    tests/image/image_tests.exe tests/frame/frame_gpu_test.exe tests/measure/make_compare_inputs.exe; do
+    [ -f "$build/$exe" ] || fail "$exe was not built"
+done
+echo "== built: $(find "$build" -name '*.exe' -not -path '*/CMakeFiles/*' | wc -l) Windows executables"
 built=$(date +%s)
 [ -f "$build/shaders/rhi_tests/chain_seed.dxbc" ] ||
     fail "the build made no DXBC kernels (configure did not find $tools/bin/vkd3d-compiler)"
@@ -77,6 +100,17 @@ export LUMINA_SHADER_DIR="Z:$build/shaders"
 
 echo "== wine: lumina.exe"
 run_wine "$build/app/lumina.exe" --version
+run_wine "$build/app/lumina.exe" --help
+run_wine "$build/app/lumina.exe" info cornell_box
+# compare: EXR reading (tinyexr), metrics, a PNG heat map and JSON, all on Windows.
+compare_dir=$build/wine-compare
+rm -rf "$compare_dir" && mkdir -p "$compare_dir"
+run_wine "$build/tests/measure/make_compare_inputs.exe" "Z:$compare_dir"
+run_wine "$build/app/lumina.exe" compare "Z:$compare_dir/ref.exr" "Z:$compare_dir/test.exr" \
+    --heatmap "Z:$compare_dir/diff.png" --json "Z:$compare_dir/compare.json"
+[ -s "$compare_dir/diff.png" ] && [ -s "$compare_dir/compare.json" ] || fail "lumina.exe compare wrote no heat map or JSON"
+echo "== wine: image_tests.exe (EXR through tinyexr, PNG)"
+run_wine "$build/tests/image/image_tests.exe" --gtest_brief=1
 run_wine "$build/app/lumina.exe" --list-devices --api d3d12
 
 # D3D12 has no debug layer under Wine. What can be checked is vkd3d's Vulkan: the Khronos

@@ -16,6 +16,9 @@ packages=(
   assimp-testmodels
   # The Direct3D 12 backend, cross-compiled and run under Wine (.ci/build-d3d12-mingw.sh)
   g++-mingw-w64-x86-64 directx-headers-dev googletest wine64 xvfb xauth
+  # EXR in the cross build (gi/image/exr_tinyexr.cpp); dpkg-source unpacks GLFW and Dear ImGui
+  # (.ci/fetch-debian-sources.sh)
+  libtinyexr-dev zlib1g-dev libz-mingw-w64-dev dpkg-dev
 )
 
 if [ "$(id -u)" -eq 0 ]; then

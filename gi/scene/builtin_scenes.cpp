@@ -7,7 +7,9 @@
 
 #ifdef _WIN32
 #define WIN32_LEAN_AND_MEAN
+#ifndef NOMINMAX // MinGW-w64's libstdc++ defines it already
 #define NOMINMAX
+#endif
 #include <windows.h>
 #endif
 

@@ -2,6 +2,7 @@
 // regeneration (only Debian 12's lavapipe may write goldens).
 #include "tests/golden/golden.h"
 #include "tests/image/temp_dir.h"
+#include "tests/test_env.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -86,10 +87,10 @@ protected:
         TempDir::SetUp();
         previous_ = std::filesystem::current_path();
         std::filesystem::current_path(path(""));
-        setenv("LUMINA_SOURCE_DIR", path("source").c_str(), 1);
+        lumina::testing::setEnv("LUMINA_SOURCE_DIR", path("source").string());
     }
     void TearDown() override {
-        unsetenv("LUMINA_UPDATE_GOLDENS");
+        lumina::testing::unsetEnv("LUMINA_UPDATE_GOLDENS");
         std::filesystem::current_path(previous_);
         TempDir::TearDown();
     }
@@ -97,20 +98,20 @@ protected:
 };
 
 TEST_F(GoldenFiles, UpdateWritesTheGoldenThenItPasses) {
-    setenv("LUMINA_UPDATE_GOLDENS", "1", 1);
+    lumina::testing::setEnv("LUMINA_UPDATE_GOLDENS", "1");
     GoldenResult result = checkGolden({.name = "ramp"}, ramp(), lavapipe());
     ASSERT_TRUE(result.passed) << result.message;
     EXPECT_TRUE(result.updated);
     EXPECT_TRUE(std::filesystem::exists(path("source/tests/golden/data/ramp.exr")));
     EXPECT_TRUE(std::filesystem::exists(path("source/tests/golden/data/ramp.png")));
-    unsetenv("LUMINA_UPDATE_GOLDENS");
+    lumina::testing::unsetEnv("LUMINA_UPDATE_GOLDENS");
     result = checkGolden({.name = "ramp"}, ramp(), lavapipe());
     EXPECT_TRUE(result.passed) << result.message;
     EXPECT_FALSE(result.updated);
 }
 
 TEST_F(GoldenFiles, UpdateIsRefusedOnAnotherDriver) {
-    setenv("LUMINA_UPDATE_GOLDENS", "1", 1);
+    lumina::testing::setEnv("LUMINA_UPDATE_GOLDENS", "1");
     const GoldenResult result =
         checkGolden({.name = "ramp"}, ramp(), adapter("llvmpipe", "llvmpipe Mesa 23.1.0"));
     EXPECT_FALSE(result.passed);
@@ -119,9 +120,9 @@ TEST_F(GoldenFiles, UpdateIsRefusedOnAnotherDriver) {
 }
 
 TEST_F(GoldenFiles, FailureWritesActualExpectedAndDiff) {
-    setenv("LUMINA_UPDATE_GOLDENS", "1", 1);
+    lumina::testing::setEnv("LUMINA_UPDATE_GOLDENS", "1");
     ASSERT_TRUE(checkGolden({.name = "ramp"}, ramp(), lavapipe()).passed);
-    unsetenv("LUMINA_UPDATE_GOLDENS");
+    lumina::testing::unsetEnv("LUMINA_UPDATE_GOLDENS");
 
     image::Image actual = ramp();
     for (uint32_t x = 0; x < kSide; ++x) { // a whole row off: beyond the percentile

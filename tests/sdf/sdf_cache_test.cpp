@@ -1,5 +1,6 @@
 #include "gi/sdf/sdf_cache.h"
 #include "tests/bvh/test_meshes.h"
+#include "tests/test_env.h"
 
 #include <cstdlib>
 #include <cstring>
@@ -11,17 +12,7 @@
 namespace lumina::sdf {
 namespace {
 
-void setEnv(const char* name, const std::string& value) {
-#ifdef _WIN32
-    _putenv_s(name, value.c_str());
-#else
-    if (value.empty()) {
-        ::unsetenv(name);
-    } else {
-        ::setenv(name, value.c_str(), 1);
-    }
-#endif
-}
+using lumina::testing::setEnv;
 
 class SdfCacheTest : public ::testing::Test {
 protected:
