@@ -142,7 +142,8 @@ bool makePlot(const std::filesystem::path& csv, const std::filesystem::path& png
 void printChangeResponse(const gi::ChangeResponse& r) {
     std::cout << "  " << r.scene << " / " << r.technique << " / " << r.preset << ": after " << r.changeFrames
               << " frames of change, relMSE " << number(r.relMseAtStop)
-              << " against a fresh converged render; ";
+              << " against a fresh converged render (" << number(r.changedRegionRelMseAtStop) << " over the "
+              << number(100.0 * r.changedRegionFraction, 3) << "% of pixels the change touched); ";
     if (r.framesToRecover) {
         std::cout << "within 0.01 after " << *r.framesToRecover << " frame(s) held still ("
                   << number(r.msToRecover) << " GPU ms)";

@@ -9,6 +9,8 @@
 #include "gi/measure/metrics.h"
 #include "gi/scene/scene_animation.h"
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <stdexcept>
 
@@ -79,31 +81,49 @@ ChangeResponse measureChangeResponse(rhi::IDevice& device, PipelineCache& pipeli
                           .framesToRecover = std::nullopt};
     rhi::CommandListHandle list = device.createCommandList();
 
-    // The fresh renderer: built at the held pose, run until its surface cache settled.
-    scene::Scene held = scene;
-    scene::animateScene(held, request.changeFrames - 1);
-    image::Image reference;
-    {
-        GpuScene gpuScene(device, held);
-        FrameRenderer fresh(device, held, gpuScene, settingsFor(held, technique, preset, request));
+    // Fresh renderers built at a pose and run until their surface cache settled: at the held pose
+    // (the reference) and at the first (what the change replaced).
+    const auto converged = [&](uint64_t poseFrame, std::vector<double>* staticMs) {
+        scene::Scene posed = scene;
+        scene::animateScene(posed, poseFrame);
+        GpuScene gpuScene(device, posed);
+        FrameRenderer fresh(device, posed, gpuScene, settingsFor(posed, technique, preset, request));
         std::optional<uint32_t> settledAt;
-        std::vector<double> staticMs;
         for (uint32_t f = 0; f < request.maxReferenceFrames; ++f) {
             const double ms = renderFrame(device, pipelines, *list, fresh, f);
             const LumenGi* lumen = fresh.lumen();
             if (!settledAt && (lumen == nullptr || lumen->surfaceCache().settled())) {
                 settledAt = f;
-            } else if (settledAt) {
-                staticMs.push_back(ms);
+            } else if (settledAt && staticMs) {
+                staticMs->push_back(ms);
             }
-            result.referenceFrames = f + 1;
+            if (staticMs) {
+                result.referenceFrames = f + 1;
+            }
             if (settledAt && f >= *settledAt + kSettleFrames) {
                 break;
             }
         }
-        result.staticFrameMs = median(staticMs);
-        reference = hdrOf(device, fresh);
+        return hdrOf(device, fresh);
+    };
+    std::vector<double> staticMs;
+    const image::Image reference = converged(request.changeFrames - 1, &staticMs);
+    result.staticFrameMs = median(staticMs);
+    const image::Image before = converged(0, nullptr);
+    // The pixels the change touched: luminance differs by more than a tenth between the poses.
+    std::vector<bool> changed(size_t(request.width) * request.height, false);
+    const auto luminance = [](const image::Rgb& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; };
+    size_t changedCount = 0;
+    for (uint32_t y = 0; y < request.height; ++y) {
+        for (uint32_t x = 0; x < request.width; ++x) {
+            const double a = luminance(before.rgbAt(x, y)), b = luminance(reference.rgbAt(x, y));
+            if (std::abs(a - b) > 0.1 * std::max(a, b)) {
+                changed[size_t(y) * request.width + x] = true;
+                ++changedCount;
+            }
+        }
     }
+    result.changedRegionFraction = double(changedCount) / double(changed.size());
 
     // The renderer under test: the animation plays, then the pose is held.
     GpuScene gpuScene(device, scene);
@@ -119,7 +139,18 @@ ChangeResponse measureChangeResponse(rhi::IDevice& device, PipelineCache& pipeli
         }
     }
     result.movingFrameMs = median(movingMs);
-    result.relMseAtStop = measure::relMse(reference, hdrOf(device, renderer));
+    const image::Image atStop = hdrOf(device, renderer);
+    result.relMseAtStop = measure::relMse(reference, atStop);
+    const std::vector<float> perPixel = measure::relMseMap(reference, atStop);
+    double changedSum = 0.0;
+    size_t changedPixels = 0;
+    for (size_t i = 0; i < perPixel.size(); ++i) {
+        if (changed[i] && std::isfinite(perPixel[i])) {
+            changedSum += perPixel[i];
+            ++changedPixels;
+        }
+    }
+    result.changedRegionRelMseAtStop = changedPixels ? changedSum / double(changedPixels) : 0.0;
     uint32_t nextReport = 1;
     for (uint32_t k = 1; k <= request.maxRecoveryFrames; ++k) {
         result.msToRecover += renderFrame(device, pipelines, *list, renderer, request.changeFrames + k - 1);
@@ -145,11 +176,12 @@ void writeChangeResponseCsv(const std::filesystem::path& path, const std::vector
         throw std::runtime_error("cannot write " + path.string());
     }
     out << "scene,technique,preset,width,height,change_frames,moving_frame_ms,static_frame_ms,relmse_at_stop,"
-           "frames_to_recover,ms_to_recover,relmse_after_1_2_4_8\n";
+           "changed_region_relmse_at_stop,changed_region_fraction,frames_to_recover,ms_to_recover,"
+           "relmse_after_1_2_4_8\n";
     for (const ChangeResponse& r : rows) {
         out << r.scene << ',' << r.technique << ',' << r.preset << ',' << r.width << ',' << r.height << ','
             << r.changeFrames << ',' << r.movingFrameMs << ',' << r.staticFrameMs << ',' << r.relMseAtStop
-            << ','
+            << ',' << r.changedRegionRelMseAtStop << ',' << r.changedRegionFraction << ','
             << (r.framesToRecover ? std::to_string(*r.framesToRecover) : std::string("not within limit"))
             << ',' << r.msToRecover << ',';
         for (size_t i = 0; i < r.relMseAfter.size(); ++i) {

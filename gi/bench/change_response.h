@@ -34,9 +34,14 @@ struct ChangeResponse {
     uint32_t width = 0;
     uint32_t height = 0;
     uint32_t changeFrames = 0;
-    double movingFrameMs = 0.0;              // median GPU time of the frames that applied a change
-    double staticFrameMs = 0.0;              // median GPU time of the fresh renderer's frames once it settled
-    double relMseAtStop = 0.0;               // the last animated frame against the fresh render (the lag)
+    double movingFrameMs = 0.0; // median GPU time of the frames that applied a change
+    double staticFrameMs = 0.0; // median GPU time of the fresh renderer's frames once it settled
+    double relMseAtStop = 0.0;  // the last animated frame against the fresh render (the lag)
+    // The same over the pixels the change touched only: where converged renders of the first pose
+    // and of the held pose differ by more than a tenth. Old light left behind (a ghost of the block
+    // where it was, a shadow that has not moved on) is concentrated there.
+    double changedRegionRelMseAtStop = 0.0;
+    double changedRegionFraction = 0.0;      // of the image's pixels
     std::vector<double> relMseAfter;         // after 1, 2, 4, 8, ... frames held still (up to recovery)
     std::optional<uint32_t> framesToRecover; // frames held still until within tolerance; none: not
     double msToRecover = 0.0;                // GPU time of those frames
