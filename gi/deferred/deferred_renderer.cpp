@@ -62,7 +62,10 @@ void DeferredRenderer::setLights(std::vector<scene::Light> lights) {
     }
     lightsDirty_ = true;
     ++lightsVersion_;
-    shadowFrames_.assign(sceneLights_.size(), 0);
+    // Stamps stay with their light: a light that keeps its index and its shadow map keeps its
+    // stamp (a changed one gets a new stamp when its map is rendered again), so editing one light
+    // does not make the surface cache re-light what the others reach.
+    shadowFrames_.resize(sceneLights_.size(), 0);
 }
 
 ShadowedLights DeferredRenderer::shadowedLights() const {
