@@ -155,3 +155,32 @@ if grep -qE 'Validation (Error|Warning)' "$log"; then
     grep -E -B2 'Validation (Error|Warning)' "$log" >&2
     fail "Vulkan validation reported problems beneath vkd3d; log: $log"
 fi
+
+# The deferred frame on D3D12: GBuffer, sun and cube shadow maps, direct light and composite, every
+# draw and dispatch from DXBC, against the Vulkan build's frame of the same scene. Both are
+# deterministic (no temporal noise in the direct technique), so they must agree to rounding.
+# The lumen frame runs under Wine too but does not match yet (docs/d3d12.md), so it is not here.
+linux_lumina=${LUMINA_LINUX_BUILD_DIR:-$root/build}/app/lumina
+if [ ! -x "$linux_lumina" ]; then
+    echo "== skipped: the D3D12 frame against Vulkan needs the Linux build's lumina ($linux_lumina;" \
+        "set LUMINA_LINUX_BUILD_DIR)"
+    exit 0
+fi
+echo "== wine: lumina.exe render cornell_box_point --technique direct on D3D12, against Vulkan"
+frames=$build/wine-render
+rm -rf "$frames" && mkdir -p "$frames"
+render_log=$frames/d3d12.log
+run_wine "$build/app/lumina.exe" render cornell_box_point --api d3d12 --technique direct --size 64x64 \
+    --out "Z:$frames/d3d12.png" --exr "Z:$frames/d3d12.exr" >"$render_log" 2>&1 ||
+    { cat "$render_log" >&2; fail "lumina.exe render failed under Wine; log: $render_log"; }
+if grep -qE 'Validation (Error|Warning)' "$render_log"; then
+    grep -E -B2 'Validation (Error|Warning)' "$render_log" >&2
+    fail "Vulkan validation reported problems beneath vkd3d while rendering; log: $render_log"
+fi
+(unset VK_INSTANCE_LAYERS VK_LAYER_ENABLES VK_ICD_FILENAMES VKD3D_CONFIG LUMINA_SHADER_DIR
+ "$linux_lumina" render cornell_box_point --technique direct --size 64x64 --out "$frames/vulkan.png" \
+     --exr "$frames/vulkan.exr" >"$frames/vulkan.log" 2>&1) || fail "the Vulkan render failed; log: $frames/vulkan.log"
+relmse=$("$linux_lumina" compare "$frames/vulkan.exr" "$frames/d3d12.exr" | awk '/relMSE/ {print $2; exit}')
+echo "   relMSE of the D3D12 frame against the Vulkan one: $relmse (must be at most 1e-6)"
+awk -v r="$relmse" 'BEGIN { exit !(r != "" && r <= 1e-6) }' ||
+    fail "the D3D12 frame differs from the Vulkan frame (relMSE $relmse); images in $frames"
