@@ -62,6 +62,7 @@ FrameRenderer::FrameRenderer(rhi::IDevice& device, const scene::Scene& scene, Gp
     for (const scene::Instance& instance : scene.instances) {
         transforms_.push_back(instance.transform);
     }
+    worldBounds_ = sceneBounds();
     materialUsers_.resize(scene.materials.size());
     for (const scene::Material& material : scene.materials) {
         emissions_.push_back(material.emission);
@@ -175,21 +176,16 @@ void FrameRenderer::applyPendingChanges(FrameContext& frame) {
     lastChanges_ = {};
     if (pendingLights_) {
         // Lights first: the cards of instances moved below get masks for the new lights.
-        const std::vector<scene::Light> before = deferred_.sceneLights();
-        const scene::Bounds bounds = sceneBounds();
+        const std::vector<scene::Light>& before = deferred_.sceneLights();
+        const std::vector<uint32_t> changed = scene::changedLights(before, *pendingLights_);
+        lastChanges_.changedLights = uint32_t(changed.size());
         std::vector<scene::Bounds> reach;
-        for (size_t i = 0; i < std::max(before.size(), pendingLights_->size()); ++i) {
-            const bool same =
-                i < before.size() && i < pendingLights_->size() && before[i] == (*pendingLights_)[i];
-            if (same) {
-                continue;
-            }
-            ++lastChanges_.changedLights;
+        for (uint32_t i : changed) {
             if (i < before.size()) {
-                reach.push_back(lightReach(before[i], bounds));
+                reach.push_back(lightReach(before[i], worldBounds_));
             }
             if (i < pendingLights_->size()) {
-                reach.push_back(lightReach((*pendingLights_)[i], bounds));
+                reach.push_back(lightReach((*pendingLights_)[i], worldBounds_));
             }
         }
         if (lastChanges_.changedLights > 0) {
@@ -220,19 +216,19 @@ void FrameRenderer::applyPendingChanges(FrameContext& frame) {
             ++lastChanges_.movedInstances;
         }
         if (!moved.empty()) {
-            deferred_.geometryMoved(sceneBounds(), std::move(moved));
+            worldBounds_ = sceneBounds();
+            deferred_.geometryMoved(worldBounds_, std::move(moved));
         }
         pendingMoves_.clear();
     }
     if (!pendingMaterials_.empty()) {
-        const scene::Bounds bounds = sceneBounds();
         for (uint32_t material : pendingMaterials_) {
             scene::Material changed = scene_.materials[material];
             changed.emission = emissions_[material];
             gpuScene_.recordMaterial(frame.commands(), material, changed);
             if (lumen_) {
                 for (uint32_t instance : materialUsers_[material]) {
-                    lumen_->instanceMaterialChanged(instance, bounds);
+                    lumen_->instanceMaterialChanged(instance, worldBounds_);
                 }
             }
             ++lastChanges_.changedMaterials;

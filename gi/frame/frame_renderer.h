@@ -86,6 +86,7 @@ public:
 private:
     void applyPendingChanges(FrameContext& frame);
     scene::Bounds instanceBounds(uint32_t instance, const glm::mat4& transform) const;
+    // Every instance's box as transforms_ places them (O(instances): computed when they move).
     scene::Bounds sceneBounds() const;
 
     const scene::Scene& scene_;
@@ -97,6 +98,7 @@ private:
 
     // The dynamic state the renderer shows, and the edits waiting for the next render().
     std::vector<glm::mat4> transforms_;
+    scene::Bounds worldBounds_;                        // of the instances as transforms_ places them
     std::vector<glm::vec3> emissions_;                 // per material
     std::vector<std::vector<uint32_t>> materialUsers_; // per material: instances drawing it
     std::vector<std::pair<uint32_t, glm::mat4>> pendingMoves_;

@@ -18,6 +18,16 @@ Bounds transformBounds(const Bounds& local, const glm::mat4& transform) {
     return out;
 }
 
+std::vector<uint32_t> changedLights(std::span<const Light> before, std::span<const Light> after) {
+    std::vector<uint32_t> changed;
+    for (size_t i = 0; i < std::max(before.size(), after.size()); ++i) {
+        if (i >= before.size() || i >= after.size() || before[i] != after[i]) {
+            changed.push_back(uint32_t(i));
+        }
+    }
+    return changed;
+}
+
 const char* lightTypeName(LightType type) {
     switch (type) {
     case LightType::Directional:

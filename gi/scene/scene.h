@@ -13,6 +13,7 @@
 #include <glm/glm.hpp>
 #include <limits>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -119,6 +120,10 @@ struct Light {
     glm::vec3 strength() const { return color * intensity; }
     bool operator==(const Light&) const = default;
 };
+
+// Indices of the lights that differ between two light lists of the same scene: edited ones, and
+// every index only one of them has (added or removed).
+std::vector<uint32_t> changedLights(std::span<const Light> before, std::span<const Light> after);
 
 // A perspective camera in world space; forward and up are unit length and orthogonal,
 // the image's right is cross(forward, up). The aspect ratio is the image's.

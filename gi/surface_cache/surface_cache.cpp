@@ -164,20 +164,36 @@ void SurfaceCache::restartRadiosityNear(std::span<const scene::Bounds> regions) 
     if (regions.empty()) {
         return;
     }
-    scene::Bounds all;
+    const float reach = radiosity_.maxDistance();
+    const auto grown = [reach](const scene::Bounds& box) {
+        return scene::Bounds{box.min - glm::vec3(reach), box.max + glm::vec3(reach)};
+    };
+    scene::Bounds all, allCards;
     for (const scene::Bounds& region : regions) {
         all.extend(region);
     }
-    const float reach = radiosity_.maxDistance();
+    for (const gpu::SurfaceCard& card : cards_.cards()) {
+        allCards.extend(cardBounds(card));
+    }
+    // A region whose reach holds every card selects every card: skip the card-by-region test,
+    // which is quadratic when a light change re-lights every card (the sun, in the city).
+    const auto holdsEveryCard = [&](const scene::Bounds& region) {
+        const scene::Bounds reached = grown(region);
+        return glm::all(glm::lessThanEqual(reached.min, allCards.min)) &&
+               glm::all(glm::lessThanEqual(allCards.max, reached.max));
+    };
+    if (std::any_of(regions.begin(), regions.end(), holdsEveryCard)) {
+        schedule_.markDirty(cardTiles_);
+        return;
+    }
     std::vector<uint32_t> tiles;
     for (uint32_t card = 0; card < cards_.cards().size(); ++card) {
-        const scene::Bounds bounds = cardBounds(cards_.cards()[card]);
-        const scene::Bounds grown{bounds.min - glm::vec3(reach), bounds.max + glm::vec3(reach)};
-        if (!grown.overlaps(all)) {
+        const scene::Bounds reached = grown(cardBounds(cards_.cards()[card]));
+        if (!reached.overlaps(all)) {
             continue; // quick reject against the union, then region by region
         }
         if (std::any_of(regions.begin(), regions.end(),
-                        [&](const scene::Bounds& region) { return grown.overlaps(region); })) {
+                        [&](const scene::Bounds& region) { return reached.overlaps(region); })) {
             appendCardTiles(cards_, card, tiles);
         }
     }
@@ -271,18 +287,9 @@ void SurfaceCache::update(gi::FrameContext& frame, const std::optional<gi::Shado
 
 void SurfaceCache::moveInstance(uint32_t instance, const glm::mat4& transform,
                                 std::span<const scene::Light> lights) {
-    std::vector<scene::Bounds> regions;
-    const auto addInstanceBounds = [&] {
-        scene::Bounds box;
-        for (uint32_t card = cards_.firstCard(instance);
-             card < cards_.firstCard(instance) + cards_.cardCount(instance); ++card) {
-            box.extend(cardBounds(cards_.cards()[card]));
-        }
-        regions.push_back(box);
-    };
-    addInstanceBounds();
+    std::vector<scene::Bounds> regions{instanceCardBounds(instance)};
     cards_.moveInstance(instance, transform, lights);
-    addInstanceBounds();
+    regions.push_back(instanceCardBounds(instance));
     cardBvh_ = buildCardBvh(cards_.cards());
     cardTiles_ = tilesWithCards(cards_.atlas());
     schedule_.setTiles(cardTiles_);
@@ -291,14 +298,7 @@ void SurfaceCache::moveInstance(uint32_t instance, const glm::mat4& transform,
 }
 
 void SurfaceCache::setLights(std::span<const scene::Light> lights, uint64_t lightsVersion) {
-    std::vector<uint32_t> changed;
-    for (uint32_t i = 0; i < std::max(lights.size(), lights_.size()); ++i) {
-        const bool same = i < lights.size() && i < lights_.size() && lights[i] == lights_[i];
-        if (!same) {
-            changed.push_back(i);
-        }
-    }
-    const std::vector<uint32_t> touched = cards_.setLights(lights, changed);
+    const std::vector<uint32_t> touched = cards_.setLights(lights, scene::changedLights(lights_, lights));
     relightCards_.insert(relightCards_.end(), touched.begin(), touched.end());
     lights_.assign(lights.begin(), lights.end());
     announcedLightsVersion_ = lightsVersion;
@@ -307,12 +307,16 @@ void SurfaceCache::setLights(std::span<const scene::Light> lights, uint64_t ligh
 
 void SurfaceCache::instanceMaterialChanged(uint32_t instance) {
     cards_.markInstanceDirty(instance);
+    restartRadiosityNear(std::vector<scene::Bounds>{instanceCardBounds(instance)});
+}
+
+scene::Bounds SurfaceCache::instanceCardBounds(uint32_t instance) const {
     scene::Bounds box;
     for (uint32_t card = cards_.firstCard(instance);
          card < cards_.firstCard(instance) + cards_.cardCount(instance); ++card) {
         box.extend(cardBounds(cards_.cards()[card]));
     }
-    restartRadiosityNear(std::vector<scene::Bounds>{box});
+    return box;
 }
 
 void SurfaceCache::lightsChanged() {

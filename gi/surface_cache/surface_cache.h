@@ -116,6 +116,8 @@ private:
     void uploadCards(rhi::ICommandList& commands);
     // Radiosity starts over on the tiles of cards within a ray's reach of `regions`.
     void restartRadiosityNear(std::span<const scene::Bounds> regions);
+    // The union of an instance's (padded) card bounds as placed now.
+    scene::Bounds instanceCardBounds(uint32_t instance) const;
     // Records the direct light where it is stale; true when it ran.
     bool recordDirectLight(gi::FrameContext& frame, const std::optional<gi::ShadowedLights>& lights,
                            const std::vector<uint32_t>& capturedTiles);
