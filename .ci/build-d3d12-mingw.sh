@@ -30,7 +30,7 @@ fail() {
     echo "build-d3d12-mingw: $*" >&2
     exit 1
 }
-for tool in cmake ninja x86_64-w64-mingw32-g++-posix xvfb-run xauth; do
+for tool in cmake ninja x86_64-w64-mingw32-g++-posix Xvfb; do
     command -v "$tool" >/dev/null 2>&1 || fail "$tool not found (run .ci/install-deps.sh)"
 done
 wine=
@@ -88,7 +88,7 @@ trap cleanup EXIT
 # Runs a Windows executable under Wine on a virtual X display (Wine's DXGI needs a display
 # driver to list adapters).
 run_wine() {
-    xvfb-run -a "$wine" "$@"
+    "$root/scripts/with_virtual_display.sh" "$wine" "$@"
 }
 
 # vkd3d 1.6 (Wine 8) reads every descriptor table as zero on Debian 12's lavapipe (Mesa 22.3,

@@ -1,5 +1,6 @@
-# Shader hot reload of lumina-viewer under a virtual X display (xvfb-run) on lavapipe with the
-# validation layer, run with cmake -P: VIEWER the executable; WORK a scratch folder.
+# Shader hot reload of lumina-viewer under a virtual X display (scripts/with_virtual_display.sh) on lavapipe
+# with the validation layer, run with cmake -P: VIEWER the executable; DISPLAY_WRAPPER that script;
+# WORK a scratch folder.
 # --test-hot-reload copies the kernels' sources and the build's SPIR-V under WORK, edits the
 # debug view kernel (shaders/viewer/visualise.hlsl) to invert its colours and checks that the
 # next frame shows exactly the inverted image, then adds a syntax error and checks that the
@@ -11,8 +12,8 @@ include(${CMAKE_CURRENT_LIST_DIR}/../cli_smoke.cmake)
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
 
-set(LUMINA xvfb-run)
-run(0 hot-reload -a -s "-screen 0 640x480x24" "${VIEWER}" cornell_box --size 32x32 --validation
+set(LUMINA "${DISPLAY_WRAPPER}")
+run(0 hot-reload "${VIEWER}" cornell_box --size 32x32 --validation
     --test-hot-reload "${WORK}/kernels")
 expect_match(hot-reload "${OUT}" "hot reload: watching .*/kernels/src")
 expect_match(hot-reload "${OUT}" "hot reload: reloaded viewer/visualise.hlsl")

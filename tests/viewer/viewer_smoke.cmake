@@ -1,5 +1,5 @@
-# lumina-viewer under a virtual X display (xvfb-run) on lavapipe, run with cmake -P:
-#   VIEWER, LUMINA: the executables; WORK: a scratch folder.
+# lumina-viewer under a virtual X display (scripts/with_virtual_display.sh) on lavapipe, run with
+# cmake -P: VIEWER, LUMINA: the executables; DISPLAY_WRAPPER: that script; WORK: a scratch folder.
 # 1. flags: --help exits 0 and lists the keys; bad flags, and a --view the technique does not
 #    have, exit 2 with the problem named.
 # 2. cornell_box at 96x96 with the validation layer (synchronization validation on): the window
@@ -19,10 +19,10 @@ file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
 
 # viewer(<expected exit code> <name> args...): lumina-viewer on a fresh virtual X display, through
-# cli_smoke.cmake's run() with xvfb-run as the program; OUT and ERR as run() leaves them.
+# cli_smoke.cmake's run() with the display wrapper as the program; OUT and ERR as run() leaves them.
 function(viewer expected name)
-  set(LUMINA xvfb-run)
-  run(${expected} ${name} -a -s "-screen 0 640x480x24" "${VIEWER}" ${ARGN})
+  set(LUMINA "${DISPLAY_WRAPPER}")
+  run(${expected} ${name} "${VIEWER}" ${ARGN})
   set(OUT "${OUT}" PARENT_SCOPE)
   set(ERR "${ERR}" PARENT_SCOPE)
 endfunction()
