@@ -74,19 +74,23 @@ float sdfSampleCascade(uint c, float3 p) {
     float3 boxMin = cascade.minAndVoxelSize.xyz;
     float3 boxMax = cascade.maxAndMaxDistance.xyz;
     float invVoxel = 1.0f / cascade.minAndVoxelSize.w;
-    int3 last = int3(cascade.dims.xyz) - 1;
+    uint3 dims = cascade.dims.xyz;
     float3 inBox = clamp(p, boxMin, boxMax);
-    float3 local = clamp((inBox - boxMin) * invVoxel, float3(0.5f, 0.5f, 0.5f), float3(cascade.dims.xyz) - 0.5f) - 0.5f;
-    int3 base = min(int3(local), last);
-    int3 next = min(base + 1, last);
-    float3 f = local - float3(base);
+    // local lies in [0, dims - 1], so floor(local) is a voxel of the grid. Each value is cast to
+    // one other type only (dims to float, the floored voxel to uint): vkd3d-shader merges two
+    // casts of one value and then reads one as the other (docs/d3d12.md).
+    float3 local = clamp((inBox - boxMin) * invVoxel, float3(0.5f, 0.5f, 0.5f), float3(dims) - 0.5f) - 0.5f;
+    float3 baseVoxel = floor(local);
+    float3 f = local - baseVoxel;
+    uint3 base = uint3(baseVoxel);
+    uint3 next = min(base + 1u, dims - 1u);
     // Toroidal texels of base and next, (voxel + wrap) mod dims: both terms lie in [0, dims), so
     // one conditional subtraction does it, without an integer division per sample. With a single
     // cascade the wrap is 0: the texels are base and next themselves.
-    uint3 b = uint3(base) + cascade.wrapAndSlab.xyz;
-    b -= cascade.dims.xyz * uint3(b >= cascade.dims.xyz);
-    uint3 n = uint3(next) + cascade.wrapAndSlab.xyz;
-    n -= cascade.dims.xyz * uint3(n >= cascade.dims.xyz);
+    uint3 b = base + cascade.wrapAndSlab.xyz;
+    b = b >= dims ? b - dims : b;
+    uint3 n = next + cascade.wrapAndSlab.xyz;
+    n = n >= dims ? n - dims : n;
     b.z += cascade.wrapAndSlab.w;
     n.z += cascade.wrapAndSlab.w;
     float c00 = lerp(sdfGlobalTexel(uint3(b.x, b.y, b.z)), sdfGlobalTexel(uint3(n.x, b.y, b.z)), f.x);
@@ -114,8 +118,8 @@ float sdfSampleGlobal(float3 p) {
 uint sdfGlobalInstanceAt(float3 p) {
     SdfGlobalCascade cascade = LUMINA_SDF_SCENE.cascades[sdfGlobalCascadeAt(p)];
     float invVoxel = 1.0f / cascade.minAndVoxelSize.w;
-    int3 last = int3(cascade.dims.xyz) - 1;
-    int3 voxel = clamp(int3(floor((p - cascade.minAndVoxelSize.xyz) * invVoxel)), int3(0, 0, 0), last);
+    float3 voxel = clamp(floor((p - cascade.minAndVoxelSize.xyz) * invVoxel), float3(0.0f, 0.0f, 0.0f),
+                         float3(cascade.dims.xyz - 1u));
     uint3 texel = (uint3(voxel) + cascade.wrapAndSlab.xyz) % cascade.dims.xyz;
     texel.z += cascade.wrapAndSlab.w;
     float id = LUMINA_SDF_GLOBAL.Load(int4(int3(texel), 0)).y;

@@ -13,9 +13,9 @@
 
 #define LUMINA_SKY_PI 3.14159265359f
 
-float3 skyTexel(int2 texel, uint2 size) {
-    texel.x = (texel.x % int(size.x) + int(size.x)) % int(size.x);
-    texel.y = clamp(texel.y, 0, int(size.y) - 1);
+float3 skyTexel(int2 texel, int2 size) {
+    texel.x = (texel.x % size.x + size.x) % size.x;
+    texel.y = clamp(texel.y, 0, size.y - 1);
     return LUMINA_SKY_TEXTURE.Load(int3(texel, 0)).rgb;
 }
 
@@ -28,12 +28,15 @@ float3 skyRadiance(float3 direction) {
     }
     float u = 0.5f + atan2(direction.x, -direction.z) / (2.0f * LUMINA_SKY_PI);
     float v = acos(clamp(direction.y, -1.0f, 1.0f)) / LUMINA_SKY_PI;
-    float2 p = float2(u * float(size.x), v * float(size.y)) - 0.5f;
+    // size is cast to int only, and the float size comes from that int: vkd3d-shader merges two
+    // casts of one value and then reads one as the other (docs/d3d12.md).
+    int2 texels = int2(size);
+    float2 p = float2(u, v) * float2(texels) - 0.5f;
     float2 base = floor(p);
     float2 f = p - base;
     int2 t = int2(base);
-    float3 top = lerp(skyTexel(t, size), skyTexel(t + int2(1, 0), size), f.x);
-    float3 bottom = lerp(skyTexel(t + int2(0, 1), size), skyTexel(t + int2(1, 1), size), f.x);
+    float3 top = lerp(skyTexel(t, texels), skyTexel(t + int2(1, 0), texels), f.x);
+    float3 bottom = lerp(skyTexel(t + int2(0, 1), texels), skyTexel(t + int2(1, 1), texels), f.x);
     return lerp(top, bottom, f.y);
 }
 

@@ -36,8 +36,11 @@ float3 cardToWorldSpace(SurfaceCard card, float3 cardPoint) {
 
 // World position of the surface captured at an atlas texel of `card` (its centre).
 float3 atlasTexelWorldPosition(SurfaceCard card, uint2 texel) {
-    float2 uv = (float2(texel) + 0.5f - float2(card.atlasRect.xy)) / float2(card.atlasRect.zw);
-    float z = LUMINA_CAPTURE_DEPTH.Load(int3(texel, 0));
+    // texel is cast to int once, and the float comes from that int: vkd3d-shader merges two
+    // casts of one value and then reads one as the other (docs/d3d12.md).
+    int2 index = int2(texel);
+    float2 uv = (float2(index) + 0.5f - float2(card.atlasRect.xy)) / float2(card.atlasRect.zw);
+    float z = LUMINA_CAPTURE_DEPTH.Load(int3(index, 0));
     return cardToWorldSpace(card, float3(uv, z));
 }
 
