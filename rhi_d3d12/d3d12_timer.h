@@ -1,7 +1,8 @@
 #pragma once
-// GPU-timed regions of one command list: a timestamp query heap written with EndQuery at each
-// region's start and end, resolved into a readback buffer when the list ends, and read once
-// its submission has finished.
+// GPU-timed regions of one command list: timestamp query heaps (a new one whenever the last is
+// full, so a recording may time any number of regions) written with EndQuery at each region's
+// start and end, resolved into readback buffers when the list ends, and read once its
+// submission has finished.
 #include "rhi/command_list.h"
 #include "rhi_d3d12/d3d12_context.h"
 
@@ -30,17 +31,23 @@ public:
     void reset();
 
 private:
-    void create();
+    void addBlock();
+    void writeTimestamp(ID3D12GraphicsCommandList* list);
+    uint64_t ticks(uint32_t timestamp) const;
 
     ContextHandle context_;
     D3D12_COMMAND_LIST_TYPE listType_;
     uint64_t ticksPerSecond_;
     bool supported_;
     std::string name_;
-    ComPtr<ID3D12QueryHeap> heap_;
-    ComPtr<ID3D12Resource> readback_;
-    uint64_t readbackBytes_ = 0;
-    const uint64_t* ticks_ = nullptr;
+    // One query heap and its mapped readback buffer per kTimestampsPerHeap timestamps.
+    struct Block {
+        ComPtr<ID3D12QueryHeap> heap;
+        ComPtr<ID3D12Resource> readback;
+        uint64_t readbackBytes = 0;
+        const uint64_t* ticks = nullptr;
+    };
+    std::vector<Block> blocks_;
     struct Region {
         std::string name;
         uint32_t begin = 0;
