@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Finds vkd3d-shader's merged-cast miscompile in DXBC disassembly (docs/d3d12.md).
+"""Finds vkd3d-shader's merged-cast miscompile in a DXBC disassembly (docs/d3d12.md).
 
 vkd3d-shader 2.1 merges casts of one value to two types into one conversion instruction: for
 `float3(v)` beside `uint3(v)` (v an int3) it writes `itof r1.xyzw, r0.xyzx` and then reads lane w

@@ -19,7 +19,9 @@ RWStructuredBuffer<float4> gSh : register(u0); // LUMINA_SH_COEFFICIENTS per pro
 // Tiles of LUMINA_SP_IRRADIANCE_TILE^2 texels, probe (x, y) at tile (x, y).
 LUMINA_UAV_FORMAT(rgba16f) RWTexture2D<float4> gIrradiance : register(u1);
 
-groupshared float3 gsProjection[LUMINA_SP_PROBE_TEXELS][LUMINA_SH_COEFFICIENTS];
+// Texel i's projection onto coefficient k at i * LUMINA_SH_COEFFICIENTS + k: one dimension, as
+// vkd3d-shader reads a two-dimensional groupshared array at the wrong element (docs/d3d12.md).
+groupshared float3 gsProjection[LUMINA_SP_PROBE_TEXELS * LUMINA_SH_COEFFICIENTS];
 groupshared float4 gsRadiance[LUMINA_SP_PROBE_TEXELS]; // rgb x solid angle; a: solid angle where known
 groupshared float3 gsSh[LUMINA_SH_COEFFICIENTS];
 
@@ -43,13 +45,15 @@ groupshared float3 gsSh[LUMINA_SH_COEFFICIENTS];
     const float3 deviation = texel.a > 0.0 ? texel.rgb - meanRadiance : float3(0.0, 0.0, 0.0);
     const Sh9 integrals = hemiOctTexelShIntegrals(tx, ty, LUMINA_SP_OCT_SIZE, frame);
     for (uint k = 0u; k < LUMINA_SH_COEFFICIENTS; ++k) {
-        gsProjection[t][k] = deviation * integrals.v[k];
+        gsProjection[t * LUMINA_SH_COEFFICIENTS + k] = deviation * integrals.v[k];
     }
     GroupMemoryBarrierWithGroupSync();
     if (t < LUMINA_SH_COEFFICIENTS) {
         float3 c = t == 0u ? meanRadiance * LUMINA_SH_SPHERE_INTEGRAL_0 : float3(0.0, 0.0, 0.0);
-        for (uint i = 0u; i < LUMINA_SP_PROBE_TEXELS; ++i) {
-            c += gsProjection[i][t];
+        // Unrolled: as a loop (vkd3d-shader makes every loop not marked [unroll] a [loop] for
+        // DXBC), the sum never reached its store on D3D12 under Wine (docs/d3d12.md).
+        [unroll] for (uint i = 0u; i < LUMINA_SP_PROBE_TEXELS; ++i) {
+            c += gsProjection[i * LUMINA_SH_COEFFICIENTS + t];
         }
         gsSh[t] = c;
         gSh[probe * LUMINA_SH_COEFFICIENTS + t] = float4(c, 0.0);
