@@ -41,37 +41,39 @@ RWStructuredBuffer<float4> gRayRadiance : register(u0); // rgb: radiance; a: 1 h
 #define LUMINA_SP_CONE_LEAN_VOXELS 2.0
 #define LUMINA_SP_CONE_LEAN_STEPS 32u
 
+// One return per function, and none inside a loop: with an early return in the lean loop,
+// vkd3d-shader's DXBC made every far hit black on D3D12 under Wine (docs/d3d12.md).
 float3 coneHitVoxelRadiance(SdfHit hit) {
     const float voxel = gSp.voxelGrid.minAndVoxelSize.w;
     const float3 p = hit.positionAndT.xyz;
     const float3 n = hit.normalAndCoverage.xyz;
     const float radius = hit.positionAndT.w * gSp.trace.y;
     const float reach = LUMINA_SP_CONE_LEAN_RADII * radius + LUMINA_SP_CONE_LEAN_VOXELS * voxel;
+    float3 radiance = float3(0.0, 0.0, 0.0);
+    bool found = false;
     float lean = 0.5 * voxel;
-    for (uint step = 0u; step < LUMINA_SP_CONE_LEAN_STEPS && lean <= reach; ++step) {
+    for (uint step = 0u; step < LUMINA_SP_CONE_LEAN_STEPS && lean <= reach && !found; ++step) {
         const float4 v = voxelLightingTrilinear(gSp.voxelGrid, p - lean * n, n);
-        if (v.a > 0.0) {
-            return v.rgb;
-        }
+        found = v.a > 0.0;
+        radiance = found ? v.rgb : radiance;
         lean += voxel;
     }
-    return float3(0.0, 0.0, 0.0);
+    return radiance;
 }
 
 float3 voxelRadiance(SdfHit hit) {
-    if (!hasFlag(LUMINA_SP_FLAG_VOXEL_LIGHTING)) {
-        return float3(0.0, 0.0, 0.0);
+    float3 radiance = float3(0.0, 0.0, 0.0);
+    if (hasFlag(LUMINA_SP_FLAG_VOXEL_LIGHTING)) {
+        const float3 position = hit.positionAndT.xyz;
+        const float3 uvw = (position - gSp.voxelMin.xyz) / (gSp.voxelMax.xyz - gSp.voxelMin.xyz);
+        if (hasFlag(LUMINA_SP_FLAG_VOXEL_GRID)) {
+            radiance = coneHitVoxelRadiance(hit);
+        } else if (all(uvw >= 0.0) && all(uvw <= 1.0)) {
+            const float4 v = gVoxelLighting.SampleLevel(gLinearClamp, uvw, 0.0);
+            radiance = v.a > LUMINA_SP_MIN_COVERAGE ? v.rgb / v.a : float3(0.0, 0.0, 0.0);
+        }
     }
-    const float3 position = hit.positionAndT.xyz;
-    if (hasFlag(LUMINA_SP_FLAG_VOXEL_GRID)) {
-        return coneHitVoxelRadiance(hit);
-    }
-    const float3 uvw = (position - gSp.voxelMin.xyz) / (gSp.voxelMax.xyz - gSp.voxelMin.xyz);
-    if (any(uvw < 0.0) || any(uvw > 1.0)) {
-        return float3(0.0, 0.0, 0.0);
-    }
-    const float4 v = gVoxelLighting.SampleLevel(gLinearClamp, uvw, 0.0);
-    return v.a > LUMINA_SP_MIN_COVERAGE ? v.rgb / v.a : float3(0.0, 0.0, 0.0);
+    return radiance;
 }
 
 [numthreads(LUMINA_SP_PROBE_TEXELS, 1, 1)] void main(uint3 group : SV_GroupID, uint t : SV_GroupIndex) {

@@ -30,18 +30,22 @@ float4 voxelLightingTrilinear(VoxelGridInfo grid, float3 p, float3 n) {
     float3 sum = float3(0.0f, 0.0f, 0.0f);
     float weight = 0.0f;
     for (uint axis = 0u; axis < 3u; ++axis) {
-        float faceWeight = n[axis] * n[axis];
+        // The normal's component by selection, not n[axis], and the corner's weights by selection,
+        // not from a cast of its offset: vkd3d-shader miscompiled this function's DXBC otherwise
+        // (docs/d3d12.md).
+        float na = axis == 0u ? n.x : (axis == 1u ? n.y : n.z);
+        float faceWeight = na * na;
         if (faceWeight <= 0.0f) {
             continue;
         }
-        int faceColumn = int(2u * axis + (n[axis] < 0.0f ? 1u : 0u)) * int(grid.dims.x);
+        int faceColumn = int(2u * axis + (na < 0.0f ? 1u : 0u)) * int(grid.dims.x);
         for (uint corner = 0u; corner < 8u; ++corner) {
-            int3 offset = int3(corner & 1u, (corner >> 1) & 1u, (corner >> 2) & 1u);
-            int3 v = base + offset;
+            bool3 high = bool3((corner & 1u) != 0u, (corner & 2u) != 0u, (corner & 4u) != 0u);
+            int3 v = base + int3(high.x ? 1 : 0, high.y ? 1 : 0, high.z ? 1 : 0);
             if (any(v < 0) || any(v > last)) {
                 continue;
             }
-            float3 w3 = lerp(1.0f - f, f, float3(offset));
+            float3 w3 = float3(high.x ? f.x : 1.0f - f.x, high.y ? f.y : 1.0f - f.y, high.z ? f.z : 1.0f - f.z);
             float4 texel = LUMINA_VOXEL_LIGHTING.Load(int4(v.x + faceColumn, v.y, v.z, 0));
             float w = faceWeight * w3.x * w3.y * w3.z * texel.a;
             sum += w * texel.rgb;
