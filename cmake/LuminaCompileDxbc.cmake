@@ -8,6 +8,9 @@
 #    source marks [unroll] stay unrolled. DXC and glslang never see this (their SPIR-V and
 #    DXIL are unchanged). The kernels have no do-while loops, whose `while` this would break.
 # 2. vkd3d-compiler compiles the expanded source to a DXBC container (shader model 5.1).
+# 3. Where PYTHON is given, the container's disassembly (<name>.dxbc.asm) goes through CHECK
+#    (check_dxbc_casts.py): vkd3d-shader 2.1 silently miscompiles one value cast to two types,
+#    and a kernel where it did fails the build, naming the instructions (docs/d3d12.md).
 # Any failure stops the build with the compiler's messages.
 set(expanded "${OUTPUT}.hlsl")
 get_filename_component(outdir "${OUTPUT}" DIRECTORY)
@@ -29,5 +32,23 @@ if(NOT result EQUAL 0)
   file(REMOVE "${OUTPUT}.tmp")
   message(FATAL_ERROR "${SOURCE} (${ENTRY}): vkd3d-compiler failed (line numbers are those of "
     "${expanded}):\n${messages}")
+endif()
+if(PYTHON)
+  execute_process(
+    COMMAND ${VKD3D} -x dxbc-tpf -b d3d-asm -o ${OUTPUT}.asm ${OUTPUT}.tmp
+    OUTPUT_VARIABLE messages ERROR_VARIABLE messages RESULT_VARIABLE result)
+  if(NOT result EQUAL 0)
+    file(REMOVE "${OUTPUT}.tmp")
+    message(FATAL_ERROR "${SOURCE} (${ENTRY}): vkd3d-compiler could not disassemble its DXBC:\n${messages}")
+  endif()
+  execute_process(
+    COMMAND ${PYTHON} ${CHECK} ${OUTPUT}.asm ${SOURCE}
+    OUTPUT_VARIABLE messages ERROR_VARIABLE messages RESULT_VARIABLE result)
+  if(NOT result EQUAL 0)
+    file(REMOVE "${OUTPUT}.tmp")
+    message(FATAL_ERROR "${SOURCE} (${ENTRY}): its DXBC would compute wrong results on D3D12 "
+      "(line numbers are those of ${OUTPUT}.asm); cast the value once and derive the other type "
+      "from that cast:\n${messages}")
+  endif()
 endif()
 file(RENAME "${OUTPUT}.tmp" "${OUTPUT}")

@@ -50,6 +50,17 @@ if(LUMINA_VKD3D_COMPILER)
     set(LUMINA_DXBC_COMPILER ${LUMINA_VKD3D_COMPILER})
   endif()
 endif()
+# Each DXBC kernel's disassembly is checked for vkd3d-shader's merged-cast miscompile
+# (cmake/check_dxbc_casts.py, docs/d3d12.md) where Python 3 is found; CI has it.
+set(LUMINA_DXBC_CHECK_PYTHON "")
+if(LUMINA_DXBC_COMPILER)
+  find_package(Python3 COMPONENTS Interpreter QUIET)
+  if(Python3_Interpreter_FOUND)
+    set(LUMINA_DXBC_CHECK_PYTHON ${Python3_EXECUTABLE})
+  else()
+    message(WARNING "python3 not found: DXBC kernels are not checked for vkd3d-shader's merged-cast miscompile")
+  endif()
+endif()
 
 if(NOT LUMINA_DXC AND NOT LUMINA_GLSLANG)
   message(FATAL_ERROR "No HLSL compiler: install glslang-tools (Debian) or DXC")
@@ -102,8 +113,9 @@ function(_lumina_add_dxbc_kernel root src name entry glslang_stage profile spv n
     OUTPUT ${dxbc}
     COMMAND ${CMAKE_COMMAND} -DGLSLANG=${LUMINA_GLSLANG} -DVKD3D=${LUMINA_DXBC_COMPILER}
       -DSTAGE=${glslang_stage} -DPROFILE=${profile} -DENTRY=${entry} -DROOT=${root}
-      -DSOURCE=${src} -DOUTPUT=${dxbc} -P ${_LUMINA_SHADERS_DIR}/LuminaCompileDxbc.cmake
-    DEPENDS ${src} ${spv} ${_LUMINA_SHADERS_DIR}/LuminaCompileDxbc.cmake
+      -DSOURCE=${src} -DOUTPUT=${dxbc} -DPYTHON=${LUMINA_DXBC_CHECK_PYTHON}
+      -DCHECK=${_LUMINA_SHADERS_DIR}/check_dxbc_casts.py -P ${_LUMINA_SHADERS_DIR}/LuminaCompileDxbc.cmake
+    DEPENDS ${src} ${spv} ${_LUMINA_SHADERS_DIR}/LuminaCompileDxbc.cmake ${_LUMINA_SHADERS_DIR}/check_dxbc_casts.py
     COMMENT "HLSL ${name} -> DXBC"
     VERBATIM)
   list(APPEND ${outputs_var} ${dxbc})

@@ -83,11 +83,9 @@ bool historyMatches(ScreenProbe current, ScreenProbe previous) {
 
 // Texel of a probe's map (frame f) that holds world direction d, or -1 below its hemisphere.
 int texelInFrame(ProbeFrame f, float3 d) {
+    // One return (the DXBC path miscompiles early returns taken inside loops; docs/d3d12.md).
     const float3 local = worldToProbe(f, d);
-    if (local.z <= 0.0) {
-        return -1;
-    }
-    return int(octTexelOf(hemiOctEncode(local), LUMINA_SP_OCT_SIZE));
+    return local.z > 0.0 ? int(octTexelOf(hemiOctEncode(local), LUMINA_SP_OCT_SIZE)) : -1;
 }
 
 // Solid angle of texel t of a probe's map (the same for every probe: the map is in its frame).
