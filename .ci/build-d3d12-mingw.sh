@@ -156,16 +156,40 @@ if grep -qE 'Validation (Error|Warning)' "$log"; then
     fail "Vulkan validation reported problems beneath vkd3d; log: $log"
 fi
 
+# check_vkd3d_validation LOG WHAT: fails on any Vulkan validation message in LOG but two, which
+# vkd3d 1.6 (Wine 8) makes of valid D3D12 (docs/d3d12.md tells what was tried):
+# - a depth buffer going from DEPTH_WRITE to DEPTH_READ after a render pass whose depth writes
+#   happen at the late fragment tests (the surface cache's card capture writes depth, then tests
+#   occluders against it): its layout transition is reported as a write-after-write hazard;
+# - ClearUnorderedAccessViewUint of a buffer over 8 MiB (the voxel accumulator): vkd3d clears it
+#   with one dispatch of a 32-thread group per 32 words, beyond Vulkan's 65535 groups.
+# The same tests on the Vulkan backend are clean under the same validation (their own dispatches
+# and barriers are checked there). Those messages are counted and printed, never hidden.
+VKD3D_KNOWN_MESSAGES='(usage: SYNC_IMAGE_LAYOUT_TRANSITION, prior_usage: SYNC_LATE_FRAGMENT_TESTS_DEPTH_STENCIL_ATTACHMENT_WRITE, write_barriers: 0, command: vkCmdEndRenderPass|VUID-vkCmdDispatch-groupCountX-00386)'
+check_vkd3d_validation() {
+    local log=$1 what=$2 known others
+    known=$(grep -E 'Validation (Error|Warning)' "$log" | grep -cE "$VKD3D_KNOWN_MESSAGES" || true)
+    others=$(grep -E 'Validation (Error|Warning)' "$log" | grep -vcE "$VKD3D_KNOWN_MESSAGES" || true)
+    if [ "$known" -gt 0 ]; then
+        echo "   $what: $known messages of vkd3d's own translation (known, docs/d3d12.md)"
+    fi
+    if [ "$others" -gt 0 ]; then
+        grep -E 'Validation (Error|Warning)' "$log" | grep -vE "$VKD3D_KNOWN_MESSAGES" | head -n 20 >&2
+        fail "Vulkan validation reported $others problems beneath vkd3d in $what; log: $log"
+    fi
+}
+
 # The GI passes' own GPU tests, their D3D12 half (the same test bodies as on Vulkan, each test
 # instantiated for both APIs): SDFs, BVH, deferred renderer, surface cache, screen probes, sky,
-# path tracer. The surface cache's two slowest furnaces (rho 0.95 and 0.99, 2 minutes together
+# path tracer, and the deferred and SDF goldens. The surface cache's two slowest furnaces (rho 0.95 and 0.99, 2 minutes together
 # under Wine) run on Vulkan only; docs/d3d12.md lists what runs here.
 export LUMINA_SOURCE_DIR="Z:$root"
 gi_log=$build/wine-gi-tests.log
 : >"$gi_log"
 for test in sdf/sdf_gpu_tests sdf/sdf_scene_gpu_tests bvh/bvh_gpu_tests deferred/deferred_gpu_test \
     surface_cache/surface_cache_gpu_tests surface_cache/sky_radiosity_gpu_test \
-    screen_probes/screen_probes_gpu_test screen_probes/probe_sky_gpu_test pathtracer/pathtracer_gpu_tests; do
+    screen_probes/screen_probes_gpu_test screen_probes/probe_sky_gpu_test pathtracer/pathtracer_gpu_tests \
+    deferred/deferred_golden_test sdf/sdf_golden_test; do
     echo "== wine: $test.exe on D3D12"
     set +e
     run_wine "$build/tests/$test.exe" --gtest_filter='*d3d12*:-*Rho095*:*Rho099*' >>"$gi_log" 2>&1
@@ -177,10 +201,7 @@ for test in sdf/sdf_gpu_tests sdf/sdf_scene_gpu_tests bvh/bvh_gpu_tests deferred
         fail "$test.exe failed on D3D12 under Wine (exit $status); log: $gi_log"
     fi
 done
-if grep -qE 'Validation (Error|Warning)' "$gi_log"; then
-    grep -E -B2 'Validation (Error|Warning)' "$gi_log" >&2
-    fail "Vulkan validation reported problems beneath vkd3d in the GI tests; log: $gi_log"
-fi
+check_vkd3d_validation "$gi_log" "the GI tests"
 echo "== GI tests on D3D12 under Wine: $(grep -c '^\[       OK \]' "$gi_log" || true) passed"
 
 # The deferred frame on D3D12: GBuffer, sun and cube shadow maps, direct light and composite, every
@@ -222,10 +243,7 @@ echo "== wine: lumina.exe render cornell_box --technique lumen on D3D12, against
 run_wine "$build/app/lumina.exe" render cornell_box --api d3d12 --technique lumen --preset low --size 32x32 \
     --frames 4 --out "Z:$frames/lumen_d3d12.exr" >"$frames/lumen_d3d12.log" 2>&1 ||
     { cat "$frames/lumen_d3d12.log" >&2; fail "lumina.exe render (lumen) failed under Wine; log: $frames/lumen_d3d12.log"; }
-if grep -qE 'Validation (Error|Warning)' "$frames/lumen_d3d12.log"; then
-    grep -E -B2 'Validation (Error|Warning)' "$frames/lumen_d3d12.log" >&2
-    fail "Vulkan validation reported problems beneath vkd3d while rendering lumen; log: $frames/lumen_d3d12.log"
-fi
+check_vkd3d_validation "$frames/lumen_d3d12.log" "the lumen frame"
 (unset VK_INSTANCE_LAYERS VK_LAYER_ENABLES VK_ICD_FILENAMES VKD3D_CONFIG LUMINA_SHADER_DIR
  "$linux_lumina" render cornell_box --technique lumen --preset low --size 32x32 --frames 4 \
      --out "$frames/lumen_vulkan.exr" >"$frames/lumen_vulkan.log" 2>&1) ||

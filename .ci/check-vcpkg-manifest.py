@@ -40,6 +40,7 @@ PORTS = {
     "PkgConfig": None,  # Linux: Debian's imgui.pc
     "ZLIB": None,  # only with LUMINA_EXR_LIBRARY=tinyexr (the MinGW cross build); MSVC uses OpenEXR
     "tinyexr.h": None,  # idem
+    "Python3": None,  # optional host tool: checks DXBC, built only on Linux (cmake/LuminaShaders.cmake)
 }
 # Ports that no find_package names: tools found with find_program (cmake/LuminaShaders.cmake).
 TOOL_PORTS = {"glslang", "spirv-tools", "directx-dxc"}
