@@ -1,6 +1,11 @@
 #pragma once
 // Devices and queues. Backends provide `listAdapters` and `createDevice` functions for their
 // API; app/backends.h picks one at run time (--api vulkan|d3d12).
+#include "rhi/command_list.h"
+#include "rhi/pipeline.h"
+#include "rhi/resource.h"
+#include "rhi/swapchain.h"
+
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -8,11 +13,6 @@
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include "rhi/command_list.h"
-#include "rhi/pipeline.h"
-#include "rhi/resource.h"
-#include "rhi/swapchain.h"
 
 namespace lumina::rhi {
 
@@ -56,6 +56,10 @@ struct DeviceCapabilities {
     uint32_t subgroupSize = 0;
     uint32_t maxTexture2DSize = 0;
     uint32_t maxTexture3DSize = 0;
+    // A validation layer checks this device and reports to DeviceDesc::messageCallback: the
+    // Khronos layer on Vulkan (requested and missing is an error there), the debug layer with its
+    // info queue on D3D12 (absent under Wine, and on Windows without "Graphics Tools").
+    bool validationActive = false;
 };
 
 class IQueue {

@@ -56,10 +56,9 @@ Device::Device(const rhi::DeviceDesc& desc) {
                                                           "); device-removed reports carry the "
                                                           "removal reason only");
     }
-    if (debugLayer) {
-        configureInfoQueue();
-    }
+    const bool messagesCollected = debugLayer && configureInfoQueue();
     queryCapabilities();
+    capabilities_.validationActive = messagesCollected;
     createSharedState();
     roots_ = std::make_unique<RootSignatureCache>(context_);
     pipelines_ = std::make_unique<PipelineCache>(context_, *roots_);
@@ -105,18 +104,19 @@ bool Device::enableDebugLayer(const rhi::DeviceDesc& desc) {
     return true;
 }
 
-void Device::configureInfoQueue() {
+bool Device::configureInfoQueue() {
     ComPtr<ID3D12InfoQueue> infoQueue;
     if (FAILED(context_->device()->QueryInterface(IID_PPV_ARGS(&infoQueue)))) {
         context_->message(rhi::MessageSeverity::Info,
                           "D3D12: no info queue; validation messages are not collected");
-        return;
+        return false;
     }
     D3D12_INFO_QUEUE_FILTER filter{};
     filter.DenyList.NumIDs = static_cast<UINT>(std::size(kDeniedMessages));
     filter.DenyList.pIDList = const_cast<D3D12_MESSAGE_ID*>(kDeniedMessages);
     infoQueue->AddStorageFilterEntries(&filter);
     context_->attachInfoQueue(std::move(infoQueue));
+    return true;
 }
 
 void Device::queryCapabilities() {

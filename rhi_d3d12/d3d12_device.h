@@ -42,7 +42,8 @@ public:
 private:
     // False when validation was asked for and the debug layer is not installed.
     bool enableDebugLayer(const rhi::DeviceDesc& desc);
-    void configureInfoQueue();
+    // False when the device has no info queue (messages then cannot be collected).
+    bool configureInfoQueue();
     void queryCapabilities();
     void createSharedState();
 

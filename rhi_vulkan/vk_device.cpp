@@ -29,6 +29,9 @@ Device::Device(const rhi::DeviceDesc& desc) : context_(std::make_shared<Context>
     capabilities_.subgroupSize = context_->subgroupSize();
     capabilities_.maxTexture2DSize = limits.maxImageDimension2D;
     capabilities_.maxTexture3DSize = limits.maxImageDimension3D;
+    // The instance throws when validation is requested and the layer is missing.
+    capabilities_.validationActive =
+        desc.validation || desc.synchronizationValidation || desc.gpuBasedValidation;
 
     queues_[queueIndex(rhi::QueueType::Graphics)] =
         std::make_shared<Queue>(context_, rhi::QueueType::Graphics, context_->graphicsQueue());
