@@ -32,8 +32,8 @@ struct DdgiSettings : GiSceneSettings {
     glm::uvec3 probeCounts{16};
     // Rays per probe and update, LUMINA_DDGI_FIXED_RAYS of them the fixed relocation set.
     uint32_t raysPerProbe = 144;
-    // Share of history kept each update, and after a large change (new and stored irradiance
-    // apart by more than largeChangeRatio).
+    // Share of history kept each update, and after a large change (the new irradiance below the
+    // stored by more than largeChangeRatio: a light switched off, an occluder moved in).
     float hysteresis = 0.97f;
     float changedHysteresis = 0.5f;
     float largeChangeRatio = 4.0f;

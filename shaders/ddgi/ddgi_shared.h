@@ -73,7 +73,7 @@ struct DdgiConstants {
     uint4 rays;         // x: rays per probe; y: fixed rays; z: volumes; w: probes over every volume
     float4 trace;       // x: near-field distance; y: max trace distance; z: backface fraction that
                         // marks a probe inside geometry; w: closest front face allowed (fraction of a cell)
-    float4 blend;       // x: hysteresis; y: hysteresis after a large change; z: ratio that is a large
+    float4 blend;       // x: hysteresis; y: hysteresis after a large fall; z: ratio that is a large
                         // change; w: distance weight sharpness (exponent of the cosine)
     float4 bias;        // x: normal bias; y: view bias (fractions of a volume's smallest spacing);
                         // z: 1 relocation on; w: 1 classification on

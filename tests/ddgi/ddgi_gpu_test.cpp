@@ -5,8 +5,8 @@
 //     dark room's surfaces against the lit room's;
 //   - against the stored 65,536-spp path-traced references (tests/frame/data, 128 x 128): relMSE of
 //     the final image well below the direct-only image's.
-// The tests run DDGI's low preset (8^3 probes, 96 rays) with the hysteresis lowered to 0.8 so the
-// probes forget the frames before the surface cache converged within 30 updates (0.8^30 < 0.2%).
+// The tests run DDGI's low preset (8^3 probes, 96 rays) with the hysteresis lowered to 0.9 so the
+// probes forget the frames before the surface cache converged within 40 updates (0.9^40 < 2%).
 // Every GPU test runs under the validation layer with synchronization validation.
 #include "gi/image/exr.h"
 #include "gi/measure/metrics.h"
@@ -23,8 +23,8 @@
 namespace lumina::test {
 namespace {
 
-constexpr float kTestHysteresis = 0.8f;
-constexpr uint32_t kSettleUpdates = 30;
+constexpr float kTestHysteresis = 0.9f;
+constexpr uint32_t kSettleUpdates = 40;
 
 void fastDdgi(gi::DdgiSettings& s) {
     s.hysteresis = kTestHysteresis;
@@ -51,7 +51,9 @@ TEST_P(DdgiGpu, FurnaceRadianceIsLeOverOneMinusAlbedo) {
     constexpr double kAlbedo = 0.5;
     FrameHarness h(device(), shaders(), scene::loadScene("furnace_0.5"),
                    ddgiHarness(kSize, [](gi::DdgiSettings& s) {
-                       fastDdgi(s);
+                       // A furnace has no hot spots to damp: the lower hysteresis converges
+                       // sooner (0.8^40 < 0.02%).
+                       s.hysteresis = 0.8f;
                        s.probeCounts = glm::uvec3(4);
                    }));
     const uint32_t frames = h.renderUntilConverged(kSettleUpdates);
@@ -135,8 +137,10 @@ protected:
 };
 
 constexpr uint32_t kReferenceSize = 128;
-// DDGI's relMSE / direct-only's, at most (lumen's goal is 0.1 at the medium preset).
-constexpr double kReferenceGoal = 0.35;
+// DDGI's relMSE / direct-only's, at most (lumen's goal is 0.1 at the medium preset). Measured on
+// lavapipe at this size and preset: cornell_box 0.085, cornell_box_point 0.066, open_top_box 0.135
+// (docs/ddgi.md, "Accuracy").
+constexpr double kReferenceGoal = 0.2;
 
 TEST_P(DdgiVsStoredReferenceGpu, DdgiCutsTheDirectOnlyError) {
     LUMINA_REQUIRE_KERNELS();
