@@ -29,7 +29,9 @@ std::vector<GiMemoryPart> LumenGi::memory() const {
 }
 
 std::vector<GiDebugTexture> LumenGi::debugTextures() const {
-    return {{"lumen: screen-probe irradiance atlas", probes_.resources().irradiance, 1.0f}};
+    // Lumen's buffers have views of their own (app/viewer/gi_views.cpp: SDF slices and traces,
+    // card outlines, radiosity probes, the screen probes' maps) and dumps (frame_dump.cpp).
+    return {};
 }
 
 namespace {
