@@ -69,12 +69,10 @@ gi::DdgiSettings ddgiSettings(const ParsedArgs& args, const gi::Preset& preset, 
     }
     if (args.has("ddgi-cascades")) {
         s.cascades = static_cast<uint32_t>(args.getUint("ddgi-cascades", 0, 0, LUMINA_DDGI_MAX_VOLUMES));
-        if (s.cascades > 0 && !(s.cascadeSpacing > 0.0f)) {
-            const double metresPerUnit = scene.units.metresPerUnit > 0.0 ? scene.units.metresPerUnit : 1.0;
-            s.cascadeSpacing = float(gi::kDdgiCascadeSpacingMetres / metresPerUnit);
-        }
         s.volumes.clear();
     }
+    // Cascades (the preset's or the flag's) reach across the scene with the probes they have.
+    s.cascadeSpacing = s.cascades > 0 ? gi::ddgiCascadeSpacing(scene, s.cascades, s.probeCounts.x) : 0.0f;
     if (args.has("ddgi-spacing")) {
         const double spacing = args.getDouble("ddgi-spacing", 0.0);
         if (!(spacing > 0.0) || !std::isfinite(spacing)) {
@@ -91,6 +89,8 @@ gi::DdgiSettings ddgiSettings(const ParsedArgs& args, const gi::Preset& preset, 
             s.volumes.clear();
         }
     }
+    // Beyond a few cascade cells the rays read the coarse global SDF (ddgiPreset's rule).
+    s.nearFieldDistance = s.cascades > 0 ? gi::kDdgiCascadeNearFieldCells * s.cascadeSpacing : 0.0f;
     s.raysPerProbe = static_cast<uint32_t>(args.getUint("ddgi-rays", s.raysPerProbe, 0, UINT32_MAX));
     s.hysteresis = float(args.getDouble("ddgi-hysteresis", s.hysteresis));
     try {

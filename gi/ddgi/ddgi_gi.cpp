@@ -44,7 +44,8 @@ DdgiGi::DdgiGi(rhi::IDevice& device, const scene::Scene& scene, const GpuScene& 
       volumes_(firstPlacement(settings, scene)), beforeProbes_(device.allocatedMemoryBytes()),
       resources_(
           DdgiResources::create(device, ddgiAtlasLayout(volumes_), settings.raysPerProbe, width, height)),
-      afterProbes_(device.allocatedMemoryBytes()), random_(settings.seed) {}
+      afterProbes_(device.allocatedMemoryBytes()), scrolls_(volumes_.size(), glm::uvec3(0)),
+      random_(settings.seed) {}
 
 bool DdgiGi::uploadConstants(rhi::ICommandList& commands, const scene::Camera& camera) {
     const std::vector<DdgiVolumePlacement> placed = placeDdgiVolumes(settings_, sceneBox_, camera.position);
@@ -56,11 +57,16 @@ bool DdgiGi::uploadConstants(rhi::ICommandList& commands, const scene::Camera& c
     gpu::DdgiConstants c{};
     bool anyReset = false;
     for (uint32_t v = 0; v < placed.size(); ++v) {
-        // A cascade that moved with the camera holds other places' light: start it afresh.
-        const bool reset = updates_ == 0 || placed[v] != volumes_[v];
-        anyReset = anyReset || reset;
+        // A cascade that moved with the camera keeps the probes that stay inside it; those of
+        // the planes it gained start afresh.
+        DdgiScroll scroll = scrollDdgiVolume(volumes_[v], placed[v], scrolls_[v]);
+        if (updates_ == 0) {
+            scroll = {.reset = true};
+        }
+        scrolls_[v] = scroll.offset;
+        anyReset = anyReset || scroll.reset || scroll.enteredMin != scroll.enteredMax;
         c.volumes[v] = ddgiVolumeInfo(placed[v], resources_.layout, v, settings_.maxOffset,
-                                      reset ? LUMINA_DDGI_VOLUME_RESET : 0u);
+                                      scroll.reset ? LUMINA_DDGI_VOLUME_RESET : 0u, scroll);
     }
     volumes_ = placed;
     const glm::mat3 rotation = randomRotation(random_);

@@ -71,8 +71,8 @@ public:
     uint64_t updates() const { return updates_; }
 
 private:
-    // Places the volumes for this update (cascades follow the camera) and uploads the constants;
-    // true when some volume's probes are to be reset.
+    // Places the volumes for this update (cascades follow the camera, scrolling) and uploads the
+    // constants; true when some volume's probes are to be reset (all, or the planes scrolled in).
     bool uploadConstants(rhi::ICommandList& commands, const scene::Camera& camera);
 
     DdgiSettings settings_;
@@ -82,6 +82,7 @@ private:
     uint64_t beforeProbes_;
     DdgiResources resources_;
     uint64_t afterProbes_;
+    std::vector<glm::uvec3> scrolls_; // per volume: DdgiVolumeInfo::scroll
     std::mt19937 random_;
     uint64_t updates_ = 0;
 

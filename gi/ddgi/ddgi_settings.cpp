@@ -66,6 +66,14 @@ uint32_t ddgiSettleUpdates(float hysteresis) {
     return uint32_t(std::ceil(std::log(kForgotten) / std::log(double(std::min(hysteresis, 0.999f)))));
 }
 
+float ddgiCascadeSpacing(const scene::Scene& scene, uint32_t cascades, uint32_t probesPerAxis) {
+    const double metresPerUnit = scene.units.metresPerUnit > 0.0 ? scene.units.metresPerUnit : 1.0;
+    const double coarsestReach = 2.0 * double(giSceneExtent(scene));
+    const double cellsAcross =
+        double(std::max(probesPerAxis, 2u) - 1) * double(1u << (std::max(cascades, 1u) - 1));
+    return float(std::max(kDdgiCascadeSpacingMetres / metresPerUnit, coarsestReach / cellsAcross));
+}
+
 DdgiSettings ddgiPreset(std::string_view preset, const scene::Scene& scene) {
     return ddgiPreset(findPreset(preset), scene);
 }
@@ -78,9 +86,8 @@ DdgiSettings ddgiPreset(const Preset& knobs, const scene::Scene& scene) {
     const double metresPerUnit = scene.units.metresPerUnit > 0.0 ? scene.units.metresPerUnit : 1.0;
     if (double(giSceneExtent(scene)) * metresPerUnit > kDdgiCascadeSceneMetres) {
         s.cascades = kDdgiDefaultCascades;
-        s.cascadeSpacing = float(kDdgiCascadeSpacingMetres / metresPerUnit);
-        // Rays beyond the cascades' reach read the global SDF, coarse but cheap.
-        s.nearFieldDistance = 4.0f * s.cascadeSpacing;
+        s.cascadeSpacing = ddgiCascadeSpacing(scene, s.cascades, knobs.ddgiProbesPerAxis);
+        s.nearFieldDistance = kDdgiCascadeNearFieldCells * s.cascadeSpacing;
     }
     for (const scene::ProbeVolume& v : scene.probeVolumes) {
         s.volumes.push_back({v.box, v.counts});

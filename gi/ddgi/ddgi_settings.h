@@ -59,10 +59,18 @@ struct DdgiSettings : GiSceneSettings {
 // Scenes larger than this (metres, their largest side) get camera-centred cascades instead of one
 // fitted volume: a 16^3 volume over a 2 km city is a probe every 130 m.
 inline constexpr double kDdgiCascadeSceneMetres = 200.0;
-// The finest cascade's spacing in such scenes, and how many cascades: 2 m x 16 probes = 32 m
-// around the camera at full detail, 64 m and 128 m beyond.
-inline constexpr double kDdgiCascadeSpacingMetres = 2.0;
+// How many cascades such scenes get, and their finest spacing: wide enough that the coarsest
+// cascade reaches across the whole scene from wherever the camera is (twice the scene's largest
+// side), at least this many metres (--ddgi-cascades without a --ddgi-spacing on a small scene).
 inline constexpr uint32_t kDdgiDefaultCascades = 3;
+inline constexpr double kDdgiCascadeSpacingMetres = 2.0;
+
+// With cascades, rays read the mesh SDFs for this many finest-cascade cells and the global SDF
+// beyond (a city's thousands of instances would make whole mesh-SDF traces slow).
+inline constexpr float kDdgiCascadeNearFieldCells = 4.0f;
+
+// The finest cascade's spacing for `cascades` cascades of `probesPerAxis` over `scene` (scene units).
+float ddgiCascadeSpacing(const scene::Scene& scene, uint32_t cascades, uint32_t probesPerAxis);
 
 // Updates after which a probe's history keeps less than 2% of any one earlier update's weight
 // (hysteresis^n < 0.02): what `lumina render` runs after the surface cache converged.

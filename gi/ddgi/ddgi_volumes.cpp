@@ -70,8 +70,30 @@ DdgiAtlasLayout ddgiAtlasLayout(const std::vector<DdgiVolumePlacement>& volumes)
     return layout;
 }
 
+DdgiScroll scrollDdgiVolume(const DdgiVolumePlacement& before, const DdgiVolumePlacement& after,
+                            const glm::uvec3& offset) {
+    if (before.counts != after.counts || before.spacing != after.spacing) {
+        return {.reset = true};
+    }
+    const glm::ivec3 n(after.counts);
+    const glm::ivec3 moved(glm::round((after.origin - before.origin) / after.spacing));
+    DdgiScroll scroll;
+    for (int axis = 0; axis < 3; ++axis) {
+        const int d = moved[axis];
+        if (std::abs(d) >= n[axis]) {
+            return {.reset = true};
+        }
+        // Lattice point c now is c + d before: slot (c + d + offset) mod n.
+        scroll.offset[axis] = uint32_t(((int(offset[axis]) + d) % n[axis] + n[axis]) % n[axis]);
+        scroll.enteredMin[axis] = uint32_t(d > 0 ? n[axis] - d : 0);
+        scroll.enteredMax[axis] = uint32_t(d > 0 ? n[axis] : -d);
+    }
+    return scroll;
+}
+
 gpu::DdgiVolumeInfo ddgiVolumeInfo(const DdgiVolumePlacement& volume, const DdgiAtlasLayout& layout,
-                                   uint32_t index, float maxOffset, uint32_t flags) {
+                                   uint32_t index, float maxOffset, uint32_t flags,
+                                   const DdgiScroll& scroll) {
     const glm::uvec3 c = volume.counts;
     gpu::DdgiVolumeInfo info{};
     info.originAndUnit =
@@ -79,6 +101,9 @@ gpu::DdgiVolumeInfo ddgiVolumeInfo(const DdgiVolumePlacement& volume, const Ddgi
     info.spacing = gpu::float4(volume.spacing, maxOffset);
     info.counts = gpu::uint4(c, layout.firstProbe.at(index));
     info.atlas = gpu::uint4(c.x * c.y, layout.firstRow.at(index), flags, c.x * c.y * c.z);
+    info.scroll = gpu::uint4(scroll.offset, 0u);
+    info.enteredMin = gpu::uint4(scroll.enteredMin, 0u);
+    info.enteredMax = gpu::uint4(scroll.enteredMax, 0u);
     return info;
 }
 

@@ -39,8 +39,19 @@ struct DdgiAtlasLayout {
 
 DdgiAtlasLayout ddgiAtlasLayout(const std::vector<DdgiVolumePlacement>& volumes);
 
+// How a volume's probe slots follow a move (ddgi_shared.h, DdgiVolumeInfo::scroll): the slot
+// offset after it, the lattice planes that entered with it, or a reset when the volume changed
+// shape or moved by its own size or more along an axis (nothing of it stays).
+struct DdgiScroll {
+    glm::uvec3 offset{0};
+    glm::uvec3 enteredMin{0}, enteredMax{0}; // per axis; equal: no plane entered on that axis
+    bool reset = false;
+};
+DdgiScroll scrollDdgiVolume(const DdgiVolumePlacement& before, const DdgiVolumePlacement& after,
+                            const glm::uvec3& offset);
+
 // The shader's view of a volume.
 gpu::DdgiVolumeInfo ddgiVolumeInfo(const DdgiVolumePlacement& volume, const DdgiAtlasLayout& layout,
-                                   uint32_t index, float maxOffset, uint32_t flags);
+                                   uint32_t index, float maxOffset, uint32_t flags, const DdgiScroll& scroll);
 
 } // namespace lumina::gi

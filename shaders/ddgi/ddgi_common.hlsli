@@ -28,7 +28,8 @@ DdgiProbeRef ddgiProbeRef(uint probe) {
 // World position of a probe: its lattice point moved by its relocation offset.
 float3 ddgiProbePosition(DdgiProbeRef ref, DdgiProbe probe) {
     const DdgiVolumeInfo v = gDdgi.volumes[ref.volume];
-    return ddgiLatticePosition(v, ddgiProbeCoord(ref.local, v.counts)) + probe.offsetAndState.xyz;
+    return ddgiLatticePosition(v, ddgiLatticeOfSlot(v, ddgiProbeCoord(ref.local, v.counts))) +
+           probe.offsetAndState.xyz;
 }
 
 // Ray `ray` of every probe this update: the fixed set unrotated, the rest a spherical Fibonacci

@@ -68,7 +68,7 @@ float4 sampleVolume(uint v, float3 p, float3 n, float3 towardsCamera) {
     for (uint corner = 0u; corner < 8u; ++corner) {
         const int3 offset = int3(corner & 1u, (corner >> 1) & 1u, corner >> 2);
         const uint3 c = uint3(min(base + offset, last));
-        const uint local = ddgiProbeIndex(c, volume.counts);
+        const uint local = ddgiProbeIndex(ddgiSlotOfLattice(volume, c), volume.counts);
         const DdgiProbe probe = gProbes[volume.counts.w + local];
         if (ddgiProbeInactive(probe)) {
             continue;

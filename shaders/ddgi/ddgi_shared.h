@@ -50,7 +50,7 @@ LUMINA_GPU_NAMESPACE_BEGIN
 #define LUMINA_DDGI_PROBE_INACTIVE 2.0f // classified off: only its fixed rays are traced, never blended
 
 // Per-volume flags (DdgiVolumeInfo.atlas.z).
-#define LUMINA_DDGI_VOLUME_RESET 1u // the reset pass returns its probes to FRESH at offset 0
+#define LUMINA_DDGI_VOLUME_RESET 1u // the reset pass returns all its probes to FRESH at offset 0
 
 struct DdgiProbe {
     float4 offsetAndState; // xyz: world offset from the lattice point (relocation); w: LUMINA_DDGI_PROBE_*
@@ -58,14 +58,22 @@ struct DdgiProbe {
 LUMINA_STATIC_ASSERT_SIZE(DdgiProbe, 16);
 
 struct DdgiVolumeInfo {
-    float4
-        originAndUnit; // xyz: world position of lattice point (0, 0, 0); w: distance unit (largest spacing)
-    float4 spacing;    // xyz: world distance between lattice points; w: max offset (fraction of a cell)
-    uint4 counts;      // xyz: probes per axis; w: global index of the volume's first probe
-    uint4 atlas; // x: tiles per atlas row (counts.x * counts.y); y: first tile row; z: LUMINA_DDGI_VOLUME_*;
-                 // w: probes
+    float4 originAndUnit; // xyz: world position of lattice point (0, 0, 0); w: distance unit
+                          // (largest spacing)
+    float4 spacing;       // xyz: world distance between lattice points; w: max offset (fraction of a cell)
+    uint4 counts;         // xyz: probes per axis; w: global index of the volume's first probe
+    uint4 atlas;          // x: tiles per atlas row (counts.x * counts.y); y: first tile row;
+                          // z: LUMINA_DDGI_VOLUME_*; w: probes
+    // A cascade scrolls with the camera: lattice point c (its place, from the volume's origin) is
+    // stored in probe slot (c + scroll) mod counts, so a move by whole cells keeps every probe
+    // that stays inside where it is. Those whose lattice coordinate on some axis lies in
+    // [enteredMin, enteredMax) of that axis entered the volume with this update's move and are
+    // reset (enteredMin = enteredMax: none on that axis).
+    uint4 scroll;     // xyz: slot offset; w: 0
+    uint4 enteredMin; // xyz; w: 0
+    uint4 enteredMax; // xyz; w: 0
 };
-LUMINA_STATIC_ASSERT_SIZE(DdgiVolumeInfo, 64);
+LUMINA_STATIC_ASSERT_SIZE(DdgiVolumeInfo, 112);
 
 struct DdgiConstants {
     DdgiVolumeInfo volumes[LUMINA_DDGI_MAX_VOLUMES];
@@ -82,7 +90,7 @@ struct DdgiConstants {
     uint4 screen;       // xy: image size; zw: 0
     VoxelGridInfo voxelGrid; // the surface cache's voxel lighting, for hits no card owns
 };
-LUMINA_STATIC_ASSERT_SIZE(DdgiConstants, 4 * 64 + 3 * 16 + 7 * 16 + 32);
+LUMINA_STATIC_ASSERT_SIZE(DdgiConstants, 4 * 112 + 3 * 16 + 7 * 16 + 32);
 
 // Unit direction k of n spread over the sphere on a spherical Fibonacci spiral: z steps evenly
 // from 1 to -1 (equal areas), the azimuth turns by the golden angle.
@@ -94,7 +102,7 @@ LUMINA_INLINE float3 ddgiFibonacciDirection(uint k, uint n) {
     return float3(r * cos(phi), r * sin(phi), z);
 }
 
-// Lattice coordinates of probe p (local to its volume).
+// Slot coordinates of probe p (local to its volume).
 LUMINA_INLINE uint3 ddgiProbeCoord(uint p, uint4 counts) {
     const uint plane = counts.x * counts.y;
     return uint3(p % counts.x, (p % plane) / counts.x, p / plane);
@@ -102,6 +110,17 @@ LUMINA_INLINE uint3 ddgiProbeCoord(uint p, uint4 counts) {
 
 LUMINA_INLINE uint ddgiProbeIndex(uint3 c, uint4 counts) {
     return c.x + counts.x * (c.y + counts.y * c.z);
+}
+
+// The lattice point a slot holds, and the slot of a lattice point (scrolled cascades).
+LUMINA_INLINE uint3 ddgiLatticeOfSlot(DdgiVolumeInfo v, uint3 slot) {
+    const uint3 n = uint3(v.counts.x, v.counts.y, v.counts.z);
+    return (slot + n - uint3(v.scroll.x, v.scroll.y, v.scroll.z)) % n;
+}
+
+LUMINA_INLINE uint3 ddgiSlotOfLattice(DdgiVolumeInfo v, uint3 lattice) {
+    const uint3 n = uint3(v.counts.x, v.counts.y, v.counts.z);
+    return (lattice + uint3(v.scroll.x, v.scroll.y, v.scroll.z)) % n;
 }
 
 LUMINA_INLINE float3 ddgiLatticePosition(DdgiVolumeInfo v, uint3 c) {

@@ -82,6 +82,30 @@ TEST(DdgiVolumes, CascadesFollowTheCameraByWholeCells) {
     EXPECT_EQ(layout.firstRow[1], 8u);
 }
 
+TEST(DdgiVolumes, AScrolledCascadeKeepsItsProbesAndResetsTheEnteredPlanes) {
+    const DdgiVolumePlacement before{
+        .origin = glm::vec3(0.0f), .spacing = glm::vec3(2.0f), .counts = glm::uvec3(8)};
+    DdgiVolumePlacement after = before;
+    after.origin += glm::vec3(2.0f * 3.0f, 0.0f, -2.0f); // 3 cells along +x, 1 along -z
+    const DdgiScroll scroll = scrollDdgiVolume(before, after, glm::uvec3(6, 0, 0));
+    EXPECT_FALSE(scroll.reset);
+    EXPECT_EQ(scroll.offset, glm::uvec3((6 + 3) % 8, 0, 7));
+    EXPECT_EQ(scroll.enteredMin, glm::uvec3(5, 0, 0)); // x: the last 3 planes are new
+    EXPECT_EQ(scroll.enteredMax, glm::uvec3(8, 0, 1)); // z: the first plane is new
+    // Lattice point c of `after` is the world point of c + move in `before`: the same slot.
+    gpu::DdgiVolumeInfo was{}, now{};
+    was.counts = now.counts = gpu::uint4(8, 8, 8, 0);
+    was.scroll = gpu::uint4(6, 0, 0, 0);
+    now.scroll = gpu::uint4(scroll.offset, 0);
+    const glm::uvec3 c(1, 4, 2);
+    EXPECT_EQ(gpu::ddgiSlotOfLattice(now, c),
+              gpu::ddgiSlotOfLattice(was, c + glm::uvec3(3, 0, 0) - glm::uvec3(0, 0, 1)));
+    EXPECT_EQ(gpu::ddgiLatticeOfSlot(now, gpu::ddgiSlotOfLattice(now, c)), c);
+    // A jump by the cascade's own size or more keeps nothing.
+    after.origin = before.origin + glm::vec3(16.0f, 0.0f, 0.0f);
+    EXPECT_TRUE(scrollDdgiVolume(before, after, glm::uvec3(0)).reset);
+}
+
 TEST(DdgiSettings, BadValuesAreNamed) {
     DdgiSettings s;
     EXPECT_NO_THROW(s.validate());
