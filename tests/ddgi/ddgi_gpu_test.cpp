@@ -128,6 +128,26 @@ TEST_P(DdgiGpu, LittleLightLeaksThroughTheWallToTheDarkRoom) {
     EXPECT_LT(darkE, kLeakBound * litE);
 }
 
+// ---- a light switched off ----
+
+TEST_P(DdgiGpu, ProbesFollowALightSwitchedOffWithinAFewUpdates) {
+    LUMINA_REQUIRE_KERNELS();
+    // The preset's hysteresis (0.97): without the lower one after a large fall, 20 updates would
+    // keep 0.97^20 = 54% of the old light.
+    FrameHarness h(device(), shaders(), scene::loadScene("cornell_box_point"),
+                   ddgiHarness(32, [](gi::DdgiSettings& s) { s.probeCounts = glm::uvec3(4); }));
+    h.renderUntilConverged(kSettleUpdates);
+    const double before = meanSurfaceIrradiance(h.read(h.renderer().indirect()));
+    h.renderer().setLights({});
+    constexpr uint32_t kUpdates = 20;
+    h.render(kUpdates);
+    const double after = meanSurfaceIrradiance(h.read(h.renderer().indirect()));
+    std::printf("cornell_box_point ddgi: mean E %.5f lit, %.6f %u updates after the light went off (%.4f)\n",
+                before, after, kUpdates, after / before);
+    ASSERT_GT(before, 0.0);
+    EXPECT_LT(after, 0.05 * before);
+}
+
 // ---- against the path tracer ----
 
 class DdgiVsStoredReferenceGpu : public GpuTestFixture,
