@@ -1,5 +1,5 @@
 // `lumina bench`: the run-time-against-error matrix. For every scene it renders (or reuses) a
-// path-traced reference, then runs each technique (direct, lumen, pathtracer) at each quality
+// path-traced reference, then runs each technique (direct, lumen, ddgi, pathtracer) at each quality
 // preset for a fixed number of frames, timing every pass on the GPU and measuring the image
 // against the reference at frame 1 and after convergence. Writes bench.csv, bench.json and a
 // log-log plot of error against frame time (scripts/plot_bench.py, python3-matplotlib).
@@ -335,7 +335,7 @@ Command benchCommand() {
         .flags = withSceneLoadFlags(
             {{"scenes", "LIST",
               "comma-separated scenes (default cornell_box,cornell_box_point,open_top_box)"},
-             {"techniques", "LIST", "direct, lumen, pathtracer (default direct,pathtracer)"},
+             {"techniques", "LIST", "direct, lumen, ddgi, pathtracer (default direct,pathtracer)"},
              {"presets", "LIST", "presets of direct and lumen: low, medium, high (default all)"},
              {"pt-budgets", "LIST",
               "path-tracer frame budgets in multiples of lumen's frame, else direct's (default 1,4,16)"},
