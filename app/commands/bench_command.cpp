@@ -1,5 +1,5 @@
 // `lumina bench`: the run-time-against-error matrix. For every scene it renders (or reuses) a
-// path-traced reference, then runs each technique (direct, lumen, pathtracer) at each quality
+// path-traced reference, then runs each technique (direct, lumen, ddgi, pathtracer) at each quality
 // preset for a fixed number of frames, timing every pass on the GPU and measuring the image
 // against the reference at frame 1 and after convergence. Writes bench.csv, bench.json and a
 // log-log plot of error against frame time (scripts/plot_bench.py, python3-matplotlib).
@@ -171,9 +171,9 @@ int runBench(const ParsedArgs& args) {
         budgets.push_back(budget);
     }
     for (const std::string& technique : techniques) {
-        if (!contains({"direct", "lumen", "pathtracer"}, technique)) {
+        if (!contains({"direct", "lumen", "ddgi", "pathtracer"}, technique)) {
             throw UsageError("--techniques: unknown technique '" + technique +
-                             "' (direct, lumen, pathtracer)");
+                             "' (direct, lumen, ddgi, pathtracer)");
         }
     }
     for (const std::string& preset : presets) {
@@ -305,7 +305,8 @@ Command benchCommand() {
         .name = "bench",
         .summary = "time every technique and preset and measure its error against the path tracer",
         .usage =
-            "lumina bench [--scenes A,B] [--techniques direct,lumen,pathtracer] [--presets low,medium,high] "
+            "lumina bench [--scenes A,B] [--techniques direct,lumen,ddgi,pathtracer] [--presets "
+            "low,medium,high] "
             "[--pt-budgets 1,4,16] [--size WxH] [--frames N] [--reference-spp N] [--cache DIR] [--out DIR] "
             "[--no-default-light] [--sky FILE.exr [--sky-intensity K]]",
         .description =
@@ -313,9 +314,10 @@ Command benchCommand() {
             "same "
             "scene, size, samples and seed), then runs each technique at each preset for --frames frames "
             "(default 16) at --size (default 128x128). direct is the deferred renderer (presets set its "
-            "shadow-map sizes); lumen adds the lumen GI (SDFs, surface cache, screen probes; presets are "
-            "lumen's "
-            "with direct's shadow maps of the same name); the path tracer accumulates across frames with "
+            "shadow-map sizes); lumen adds the lumen GI (SDFs, surface cache, screen probes), ddgi the DDGI "
+            "probe volumes on the same SDFs and surface cache (docs/ddgi.md; presets are "
+            "the one table of docs/gi.md, shadow maps included); the path tracer accumulates across frames "
+            "with "
             "per-frame budgets in multiples of a real-time frame: lumen's median frame when lumen runs, else "
             "direct's (samples per frame chosen from its measured cost, at least 1). Per configuration it "
             "records the median GPU time per frame and per pass (timestamp queries), the settled frame time "
@@ -326,13 +328,14 @@ Command benchCommand() {
             "and after the last frame, mean FLIP, the frames to converge (first checkpoint within 5% of the "
             "final error), the GPU memory held and the NaN/Inf pixels. Writes DIR/bench.csv, DIR/bench.json "
             "(default DIR: bench) with the commit, device, driver and API, and DIR/bench.png, error against "
-            "frame time on log-log axes (python3-matplotlib). lumen is not in the default list: on lavapipe "
-            "it costs seconds a frame until its surface cache converges; name it with --techniques. "
+            "frame time on log-log axes (python3-matplotlib). lumen and ddgi are not in the default list: on "
+            "lavapipe they cost seconds a frame until the surface cache converges; name them with "
+            "--techniques. "
             "docs/measurement.md has the columns.",
         .flags = withSceneLoadFlags(
             {{"scenes", "LIST",
               "comma-separated scenes (default cornell_box,cornell_box_point,open_top_box)"},
-             {"techniques", "LIST", "direct, lumen, pathtracer (default direct,pathtracer)"},
+             {"techniques", "LIST", "direct, lumen, ddgi, pathtracer (default direct,pathtracer)"},
              {"presets", "LIST", "presets of direct and lumen: low, medium, high (default all)"},
              {"pt-budgets", "LIST",
               "path-tracer frame budgets in multiples of lumen's frame, else direct's (default 1,4,16)"},

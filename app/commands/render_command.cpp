@@ -3,6 +3,7 @@
 // composite) rendered on the GPU and written as a PNG, optionally with the linear HDR result as
 // EXR, every intermediate buffer, and the GPU time of each pass.
 #include "app/command.h"
+#include "app/commands/ddgi_options.h"
 #include "app/commands/scene_options.h"
 #include "gi/core/build_info.h"
 #include "gi/core/frame_context.h"
@@ -17,6 +18,7 @@
 #include "gi/scene/scene_animation.h"
 #include "gi/scene/scene_loader.h"
 #include "rhi/rhi.h"
+#include "shaders/ddgi/ddgi_shared.h"
 
 #include <algorithm>
 #include <cmath>
@@ -67,6 +69,9 @@ gi::FrameRendererSettings rendererSettings(const ParsedArgs& args, const scene::
     } catch (const std::invalid_argument& e) {
         throw UsageError(e.what());
     }
+    if (settings.technique == gi::GiTechnique::Ddgi) {
+        settings.ddgi = ddgiSettings(args, *shadows, scene);
+    }
     settings.deferred = {.width = scene.image.width,
                          .height = scene.image.height,
                          .sunShadowSize = shadows->sunShadowSize,
@@ -76,10 +81,9 @@ gi::FrameRendererSettings rendererSettings(const ParsedArgs& args, const scene::
     return settings;
 }
 
-// Whether the lumen surface cache has settled (radiosity converged); always for direct.
+// Whether the technique's surface cache has settled (radiosity converged); always for direct.
 bool surfacesSettled(const gi::FrameRenderer& renderer) {
-    const gi::LumenGi* lumen = renderer.lumen();
-    return lumen == nullptr || lumen->surfaceCache().settled();
+    return renderer.gi() == nullptr || renderer.gi()->converged();
 }
 
 // GPU memory per subsystem, as allocated while each was built.
@@ -91,11 +95,11 @@ void printMemory(const gi::FrameRenderer& renderer, uint64_t sceneBytes, uint64_
     };
     std::cout << "GPU memory: scene " << mib(sceneBytes);
     uint64_t gi = 0;
-    if (const gi::LumenGi* lumen = renderer.lumen()) {
-        const gi::LumenMemory m = lumen->memory();
-        gi = m.sdf + m.surfaceCache + m.screenProbes;
-        std::cout << ", SDFs " << mib(m.sdf) << ", surface cache " << mib(m.surfaceCache)
-                  << ", screen probes " << mib(m.screenProbes);
+    if (renderer.gi() != nullptr) {
+        for (const gi::GiMemoryPart& part : renderer.gi()->memory()) {
+            gi += part.bytes;
+            std::cout << ", " << part.name << ' ' << mib(part.bytes);
+        }
     }
     std::cout << ", deferred " << mib(rendererBytes - gi) << ", total " << mib(sceneBytes + rendererBytes)
               << '\n';
@@ -151,9 +155,14 @@ int runRender(const ParsedArgs& args) {
 
     gi::FrameRendererSettings settings = rendererSettings(args, loaded, exposure);
     const bool lumen = settings.technique == gi::GiTechnique::Lumen;
-    // Direct light is final after one frame; lumen converges (see kProbeSettleFrames). An animation
+    const bool ddgi = settings.technique == gi::GiTechnique::Ddgi;
+    const bool withGi = lumen || ddgi;
+    // Direct light is final after one frame; lumen converges (see kProbeSettleFrames), DDGI's
+    // probes once their history has forgotten the frames before the cache converged. An animation
     // plays once through unless --frames says how long.
-    const bool converge = lumen && !args.common.frames && !animated;
+    const bool converge = withGi && !args.common.frames && !animated;
+    const uint32_t settleFrames =
+        ddgi ? gi::ddgiSettleUpdates(settings.ddgi->hysteresis) : kProbeSettleFrames;
     const uint32_t loopFrames =
         animated ? std::max<uint32_t>(
                        1u, uint32_t(std::ceil(loaded.animation.length() * double(loaded.framesPerSecond))))
@@ -170,6 +179,19 @@ int runRender(const ParsedArgs& args) {
                   << " (atlas " << settings.lumen->cache.atlasSize << "^2, probes every "
                   << settings.lumen->probes.probeSpacing << " px, " << settings.lumen->probes.raysPerProbe
                   << " rays each)";
+    }
+    if (ddgi) {
+        const gi::DdgiSettings& d = *settings.ddgi;
+        const auto counts = [](const glm::uvec3& c) {
+            return std::to_string(c.x) + "x" + std::to_string(c.y) + "x" + std::to_string(c.z) + " probes";
+        };
+        std::cout << ", preset "
+                  << args.get("preset", loaded.preset.empty() ? gi::kDefaultPreset : loaded.preset) << " ("
+                  << (!d.volumes.empty() ? std::to_string(d.volumes.size()) + " volume(s) from the scene file"
+                      : d.cascades > 0   ? std::to_string(d.cascades) + " camera-centred cascades of " +
+                                             counts(d.probeCounts)
+                                       : "one volume of " + counts(d.probeCounts) + " fitted to the scene")
+                  << ", " << d.raysPerProbe << " rays each, hysteresis " << d.hysteresis << ")";
     }
     std::cout << '\n';
 
@@ -210,11 +232,11 @@ int runRender(const ParsedArgs& args) {
         if (settledAt == 0 && surfacesSettled(renderer)) {
             settledAt = rendered;
         }
-        if (lumen && (rendered % 16 == 0 || rendered == frames)) {
+        if (withGi && (rendered % 16 == 0 || rendered == frames)) {
             std::cerr << "frame " << rendered << (converge ? "" : "/" + std::to_string(frames))
                       << (settledAt ? ": surface cache converged" : ": surface cache converging") << '\n';
         }
-        if (converge && settledAt != 0 && rendered >= settledAt + kProbeSettleFrames) {
+        if (converge && settledAt != 0 && rendered >= settledAt + settleFrames) {
             break;
         }
     }
@@ -225,18 +247,25 @@ int runRender(const ParsedArgs& args) {
                   << changes.changedLights << " light change(s), " << changes.changedMaterials
                   << " emission change(s)\n";
     }
-    if (lumen) {
+    if (withGi) {
         std::cout << "frames: " << rendered << " (surface cache "
                   << (settledAt ? "converged after " + std::to_string(settledAt)
                                 : std::string("not converged"))
                   << ")\n";
-        const surface_cache::SurfaceCache& cache = renderer.lumen()->surfaceCache();
+        const surface_cache::SurfaceCache& cache =
+            lumen ? renderer.lumen()->surfaceCache() : renderer.ddgi()->surfaceCache();
         const surface_cache::SurfaceCache::LodHistory& lod = cache.lodHistory();
         std::cout << "surface cache: atlas " << cache.atlas().size() << "^2, "
                   << surface_cache::toString(cache.cards().occupancy()) << '\n'
                   << "surface cache LOD: " << lod.updates << " re-plans, " << lod.evictions
                   << " evictions (at most " << lod.maxEvictionsPerUpdate << " in a frame), "
                   << lod.pendingCaptures << " captures pending\n";
+    }
+    if (ddgi) {
+        const gi::DdgiProbeCounts probes = renderer.ddgi()->probeCounts(*device);
+        std::cout << "ddgi probes: " << probes.total() << ", " << probes.inactive
+                  << " inactive (classified off: only their " << LUMINA_DDGI_FIXED_RAYS
+                  << " fixed rays traced, never blended), " << probes.active + probes.fresh << " active\n";
     }
 
     const auto writeHdr = [&](const std::filesystem::path& path) {
@@ -288,10 +317,11 @@ Command renderCommand() {
     return {
         .name = "render",
         .summary = "render a scene in real time: deferred direct light plus GI (lumen)",
-        .usage = "lumina render SCENE [--technique direct|lumen] [--preset low|medium|high] [--out img.png] "
-                 "[--exr img.exr] [--dump-buffers DIR] [--timings] [--timings-json PATH] [--frames N] "
-                 "[--warmup N] [--exposure EV] [--size WxH] [--no-default-light] [--sky FILE.exr "
-                 "[--sky-intensity K]]",
+        .usage =
+            "lumina render SCENE [--technique direct|lumen|ddgi] [--preset low|medium|high] [--out img.png] "
+            "[--exr img.exr] [--dump-buffers DIR] [--timings] [--timings-json PATH] [--frames N] "
+            "[--warmup N] [--exposure EV] [--size WxH] [--no-default-light] [--sky FILE.exr "
+            "[--sky-intensity K]]",
         .description =
             "Renders SCENE (a built-in name or a scene/glTF path) in real time: GBuffer, sun shadow map, "
             "point and spot light cube shadows and direct light (docs/deferred.md); with the lumen "
@@ -311,10 +341,10 @@ Command renderCommand() {
             "docs/scenes.md) plays it, one loop unless --frames, and only what each frame changed is "
             "recomputed (docs/dynamic_scenes.md); --animation-frame F renders the pose at frame F "
             "still, converged like a static scene.",
-        .flags = withSceneLoadFlags(
-            {{"technique", "NAME", "GI technique: direct (none) or lumen (default: the scene's, else lumen)"},
-             {"preset", "NAME",
-              "lumen quality preset: low, medium or high (default: the scene's, else medium)"},
+        .flags = withSceneLoadFlags(withDdgiFlags(
+            {{"technique", "NAME",
+              "GI technique: direct (none), lumen or ddgi (default: the scene's, else lumen)"},
+             {"preset", "NAME", "quality preset: low, medium or high (default: the scene's, else medium)"},
              {"probe-spacing", "N", "pixels per screen-probe edge (overrides the preset; 2..64)"},
              {"rays-per-probe", "N", "rays per screen probe (overrides the preset; 16..256)"},
              {"near-field-distance", "D",
@@ -328,7 +358,7 @@ Command renderCommand() {
              {"exposure", "EV", "exposure in stops before the tonemap (default 0)"},
              {"animation-frame", "F",
               "pose an animated scene at frame F and hold it still (default: play the animation, one loop "
-              "unless --frames)"}}),
+              "unless --frames)"}})),
         .run = runRender};
 }
 

@@ -45,11 +45,18 @@ std::vector<BufferView> listBufferViews(const gi::FrameRenderer& renderer, float
     views.push_back(textureView("deferred: direct light", deferred.direct(), LUMINA_VISUALISE_RADIANCE));
     views.push_back(textureView("deferred: composite (HDR)", deferred.hdr(), LUMINA_VISUALISE_RADIANCE));
 
+    if (renderer.gi() == nullptr) {
+        return views;
+    }
+    views.push_back(textureView("indirect: irradiance E", renderer.indirect(), LUMINA_VISUALISE_RADIANCE));
+    // What the technique exposes itself (GiTechniqueRenderer::debugTextures).
+    for (const gi::GiDebugTexture& debug : renderer.gi()->debugTextures()) {
+        views.push_back(textureView(debug.name, debug.texture, LUMINA_VISUALISE_RADIANCE));
+    }
     const gi::LumenGi* lumen = renderer.lumen();
     if (lumen == nullptr) {
         return views;
     }
-    views.push_back(textureView("indirect: irradiance E", renderer.indirect(), LUMINA_VISUALISE_RADIANCE));
     appendSdfViews(views);
     appendSurfaceCacheViews(views, *lumen);
     appendScreenProbeViews(views, *lumen);

@@ -138,6 +138,9 @@ void Viewer::buildRenderer() {
         if (settings.technique == gi::GiTechnique::Lumen) {
             settings.lumen = gi::lumenPreset(*preset, scene_);
         }
+        if (settings.technique == gi::GiTechnique::Ddgi) {
+            settings.ddgi = gi::ddgiPreset(*preset, scene_);
+        }
     } catch (const std::invalid_argument& e) {
         throw UsageError(e.what());
     }
@@ -153,7 +156,7 @@ void Viewer::buildRenderer() {
     const uint64_t before = allocated(device_);
     renderer_ = std::make_unique<gi::FrameRenderer>(device_, scene_, *gpuScene_, std::move(settings));
     memory_.renderer = allocated(device_) - before;
-    memory_.lumen = renderer_->lumen() ? renderer_->lumen()->memory() : gi::LumenMemory{};
+    memory_.gi = renderer_->gi() ? renderer_->gi()->memory() : std::vector<gi::GiMemoryPart>{};
     renderer_->setCamera(camera_.camera());
     listViews();
     viewsComplete_ = false;
@@ -193,7 +196,7 @@ void Viewer::applyEdits() {
         shownImage_.reset(); // it may be the old renderer's
         buildRenderer();
         state_.status = "renderer rebuilt: " + state_.technique +
-                        (renderer_->lumen() ? ", preset " + state_.preset : std::string());
+                        (renderer_->gi() ? ", preset " + state_.preset : std::string());
         std::cout << state_.status << std::endl;
     }
     // Lights, objects, emission and the animation edit scene_; the renderer recomputes only what

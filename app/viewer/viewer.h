@@ -48,7 +48,7 @@ struct ViewerState {
 struct MemoryUse {
     uint64_t scene = 0;
     uint64_t renderer = 0;
-    gi::LumenMemory lumen; // the lumen technique's subsystems (zero for direct)
+    std::vector<gi::GiMemoryPart> gi; // the GI technique's parts (none for direct)
     uint64_t viewer = 0;
     uint64_t device = 0;
 };

@@ -15,9 +15,9 @@ constexpr std::string_view kCommonUsed[] = {"help", "api", "device", "size", "fr
 const std::vector<FlagSpec>& viewerFlags() {
     static const std::vector<FlagSpec> flags = {
         {"technique", "NAME",
-         "GI technique to start with: direct or lumen (default: the scene's, else lumen)"},
+         "GI technique to start with: direct, lumen or ddgi (default: the scene's, else lumen)"},
         {"preset", "NAME",
-         "lumen preset to start with: low, medium or high (default: the scene's, else medium)"},
+         "quality preset to start with: low, medium or high (default: the scene's, else medium)"},
         {"exposure", "EV", "exposure in stops before the tonemap (default 0)"},
         {"no-vsync", "", "present without waiting for vertical blank (mailbox or immediate)"},
         {"frames-in-flight", "N", "frames the CPU may queue ahead of the display: 2 or 3 (default 2)"},

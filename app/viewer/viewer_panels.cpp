@@ -115,7 +115,7 @@ void Viewer::buildUi(const rhi::TextureHandle& image) {
     }
     if (ImGui::CollapsingHeader("renderer", ImGuiTreeNodeFlags_DefaultOpen)) {
         state_.rebuildRenderer |= combo("technique", state_.technique, gi::giTechniqueNames());
-        if (state_.technique == "lumen") {
+        if (state_.technique != "direct") {
             state_.rebuildRenderer |= combo("preset", state_.preset, gi::presetNames());
         }
         ImGui::SliderFloat("exposure (EV)", &state_.exposureEv, -8.0f, 8.0f, "%.1f");
@@ -197,12 +197,8 @@ void Viewer::buildUi(const rhi::TextureHandle& image) {
         // Sampled from the device's allocation counter around each construction.
         ImGui::Text("scene (geometry, materials, textures)  %s", megabytes(memory_.scene).c_str());
         ImGui::Text("renderer (GBuffer, shadows, GI)        %s", megabytes(memory_.renderer).c_str());
-        if (memory_.lumen.surfaceCache != 0) {
-            ImGui::Text("  of which SDFs                        %s", megabytes(memory_.lumen.sdf).c_str());
-            ImGui::Text("  of which surface cache               %s",
-                        megabytes(memory_.lumen.surfaceCache).c_str());
-            ImGui::Text("  of which screen probes               %s",
-                        megabytes(memory_.lumen.screenProbes).c_str());
+        for (const gi::GiMemoryPart& part : memory_.gi) {
+            ImGui::Text("  of which %-28s%s", part.name.c_str(), megabytes(part.bytes).c_str());
         }
         ImGui::Text("viewer (UI, swapchain copy)            %s", megabytes(memory_.viewer).c_str());
         ImGui::Text("device total now                       %s",

@@ -24,18 +24,7 @@ constexpr uint32_t kSettleFrames = 32;
 
 FrameRendererSettings settingsFor(const scene::Scene& scene, GiTechnique technique, const std::string& preset,
                                   const ChangeResponseRequest& request) {
-    const Preset& p = findPreset(preset);
-    FrameRendererSettings settings;
-    settings.technique = technique;
-    settings.deferred = {.width = request.width,
-                         .height = request.height,
-                         .sunShadowSize = p.sunShadowSize,
-                         .pointShadowSize = p.pointShadowSize,
-                         .log = [](std::string_view) {}};
-    if (technique == GiTechnique::Lumen) {
-        settings.lumen = lumenPreset(p, scene);
-    }
-    return settings;
+    return presetRendererSettings(technique, findPreset(preset), scene, request.width, request.height);
 }
 
 // One frame through `renderer`, submitted and waited for; returns its GPU milliseconds.
@@ -91,8 +80,7 @@ ChangeResponse measureChangeResponse(rhi::IDevice& device, PipelineCache& pipeli
         std::optional<uint32_t> settledAt;
         for (uint32_t f = 0; f < request.maxReferenceFrames; ++f) {
             const double ms = renderFrame(device, pipelines, *list, fresh, f);
-            const LumenGi* lumen = fresh.lumen();
-            if (!settledAt && (lumen == nullptr || lumen->surfaceCache().settled())) {
+            if (!settledAt && (fresh.gi() == nullptr || fresh.gi()->converged())) {
                 settledAt = f;
             } else if (settledAt && staticMs) {
                 staticMs->push_back(ms);

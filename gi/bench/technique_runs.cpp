@@ -126,17 +126,8 @@ TechniqueRun runRealTime(rhi::IDevice& device, PipelineCache& pipelines, const s
                          GiTechnique technique, const std::string& preset, const RunRequest& request,
                          const Reference& reference) {
     checkRequest(request, reference);
-    const Preset& shadows = findPreset(preset);
-    FrameRendererSettings settings;
-    settings.technique = technique;
-    settings.deferred = {.width = request.width,
-                         .height = request.height,
-                         .sunShadowSize = shadows.sunShadowSize,
-                         .pointShadowSize = shadows.pointShadowSize,
-                         .log = [](std::string_view) {}};
-    if (technique == GiTechnique::Lumen) {
-        settings.lumen = lumenPreset(shadows, scene);
-    }
+    FrameRendererSettings settings =
+        presetRendererSettings(technique, findPreset(preset), scene, request.width, request.height);
     TechniqueRun run{.technique = giTechniqueName(technique),
                      .preset = preset,
                      .width = request.width,
@@ -151,13 +142,9 @@ TechniqueRun runRealTime(rhi::IDevice& device, PipelineCache& pipelines, const s
                        return std::pair{rgbOnly(readTextureImage(device, *renderer.deferred().hdr())),
                                         readIndirectRadiance(device, renderer)};
                    },
-               // Lumen's surface cache stops its radiosity once converged; the direct renderer
+               // The surface cache stops its radiosity once converged; the direct renderer
                // draws its shadow maps in the first frame only.
-               .settled =
-                   [&] {
-                       const LumenGi* lumen = renderer.lumen();
-                       return lumen == nullptr || lumen->surfaceCache().settled();
-                   }},
+               .settled = [&] { return renderer.gi() == nullptr || renderer.gi()->converged(); }},
               run);
     run.gpuMemoryBytes = device.allocatedMemoryBytes() - baseline;
     return run;

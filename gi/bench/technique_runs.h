@@ -8,6 +8,7 @@
 //               presets low, medium, high set the shadow-map resolutions.
 //   lumen       the same deferred renderer plus the lumen GI (SDFs, surface cache, screen
 //               probes) through FrameRenderer; presets are lumenPreset's (gi/frame/gi_technique.h)
+//   ddgi        the DDGI probe volumes on the same SDFs and surface cache (gi/ddgi/, ddgiPreset)
 //               with the direct preset's shadow maps of the same name.
 //   pathtracer  the reference path tracer with a fixed number of samples per pixel per frame,
 //               accumulating across frames (so "converged" is many frames' samples).
@@ -71,8 +72,8 @@ struct RunRequest {
     uint32_t seed = 1;
 };
 
-// A real-time technique (direct or lumen) through FrameRenderer. Throws std::invalid_argument
-// for an unknown preset (preset.h) and what LumenGi throws.
+// A real-time technique (direct, lumen or ddgi) through FrameRenderer. Throws std::invalid_argument
+// for an unknown preset (preset.h) and what the technique throws.
 TechniqueRun runRealTime(rhi::IDevice& device, PipelineCache& pipelines, const scene::Scene& scene,
                          GiTechnique technique, const std::string& preset, const RunRequest& request,
                          const Reference& reference);

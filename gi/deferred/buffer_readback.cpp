@@ -44,6 +44,7 @@ image::Image readTextureImage(rhi::IDevice& device, rhi::ITexture& texture, uint
         switch (desc.format) {
         case rhi::Format::RGBA8_UNORM:
             return float(at[channel]) / 255.0f;
+        case rhi::Format::RG16_FLOAT:
         case rhi::Format::RGBA16_FLOAT: {
             uint16_t half = 0;
             std::memcpy(&half, at + 2 * channel, 2);
@@ -64,9 +65,13 @@ image::Image readTextureImage(rhi::IDevice& device, rhi::ITexture& texture, uint
     image::Image out(desc.width, desc.height,
                      info.channels == 4 ? std::vector<std::string>{"R", "G", "B", "A"}
                                         : std::vector<std::string>{"R", "G", "B"});
+    // One channel fills R, G and B; two fill R and G (B stays 0).
     for (uint32_t c = 0; c < (info.channels == 4 ? 4u : 3u); ++c) {
         std::span<float> plane = out.channel(kRgba[c]);
-        const uint32_t source = info.channels == 4 ? c : 0;
+        if (info.channels == 2 && c == 2) {
+            continue;
+        }
+        const uint32_t source = info.channels == 1 ? 0 : c;
         for (size_t i = 0; i < pixels; ++i) {
             plane[i] = value(i, source);
         }

@@ -7,6 +7,9 @@
 #include "gi/screen_probes/screen_probe_readback.h"
 #include "gi/surface_cache/surface_cache_dump.h"
 
+#include <cctype>
+#include <string>
+
 namespace lumina::gi {
 
 std::vector<std::filesystem::path> dumpFrameBuffers(rhi::IDevice& device, const FrameRenderer& renderer,
@@ -14,12 +17,11 @@ std::vector<std::filesystem::path> dumpFrameBuffers(rhi::IDevice& device, const 
                                                     const image::DisplayOptions& display) {
     std::vector<std::filesystem::path> written =
         dumpDeferredBuffers(device, renderer.deferred(), directory, display);
-    const LumenGi* lumen = renderer.lumen();
-    if (lumen == nullptr) {
+    if (renderer.gi() == nullptr) {
         return written;
     }
     // The indirect term: the gathered irradiance E, and the radiance it adds, albedo x E / pi.
-    image::Image irradiance = readTextureImage(device, *lumen->irradiance());
+    image::Image irradiance = readTextureImage(device, *renderer.indirect());
     irradiance.removeChannel("A");
     written.push_back(directory / "indirect_irradiance.exr");
     image::writeExr(written.back(), irradiance);
@@ -31,11 +33,28 @@ std::vector<std::filesystem::path> dumpFrameBuffers(rhi::IDevice& device, const 
     written.push_back(directory / "indirect.png");
     image::writePng(written.back(), indirect, display);
 
-    for (auto& path : surface_cache::dumpSurfaceCache(device, lumen->surfaceCache(), directory, display)) {
-        written.push_back(std::move(path));
+    // Every texture the technique exposes to the debug views, by its name.
+    for (const GiDebugTexture& debug : renderer.gi()->debugTextures()) {
+        std::string file;
+        for (char c : debug.name) {
+            file += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+        }
+        written.push_back(directory / (file + ".exr"));
+        image::writeExr(written.back(), readTextureImage(device, *debug.texture));
     }
-    for (auto& path : dumpScreenProbeBuffers(device, lumen->screenProbes(), directory)) {
-        written.push_back(std::move(path));
+    if (const LumenGi* lumen = renderer.lumen()) {
+        for (auto& path :
+             surface_cache::dumpSurfaceCache(device, lumen->surfaceCache(), directory, display)) {
+            written.push_back(std::move(path));
+        }
+        for (auto& path : dumpScreenProbeBuffers(device, lumen->screenProbes(), directory)) {
+            written.push_back(std::move(path));
+        }
+    }
+    if (const DdgiGi* ddgi = renderer.ddgi()) {
+        for (auto& path : surface_cache::dumpSurfaceCache(device, ddgi->surfaceCache(), directory, display)) {
+            written.push_back(std::move(path));
+        }
     }
     return written;
 }

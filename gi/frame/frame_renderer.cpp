@@ -1,7 +1,6 @@
 #include "gi/frame/frame_renderer.h"
 
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 #include <string>
 
@@ -50,14 +49,40 @@ scene::Bounds lightReach(const scene::Light& light, const scene::Bounds& scene) 
 
 } // namespace
 
+FrameRendererSettings presetRendererSettings(GiTechnique technique, const Preset& preset,
+                                             const scene::Scene& scene, uint32_t width, uint32_t height) {
+    FrameRendererSettings settings;
+    settings.technique = technique;
+    settings.deferred = {.width = width,
+                         .height = height,
+                         .sunShadowSize = preset.sunShadowSize,
+                         .pointShadowSize = preset.pointShadowSize,
+                         .log = [](std::string_view) {}};
+    if (technique == GiTechnique::Lumen) {
+        settings.lumen = lumenPreset(preset, scene);
+    }
+    if (technique == GiTechnique::Ddgi) {
+        settings.ddgi = ddgiPreset(preset, scene);
+    }
+    return settings;
+}
+
 FrameRenderer::FrameRenderer(rhi::IDevice& device, const scene::Scene& scene, GpuScene& gpuScene,
                              FrameRendererSettings settings)
     : scene_(scene), gpuScene_(gpuScene), technique_(settings.technique), camera_(scene.camera),
       deferred_(device, scene, gpuScene, settings.deferred) {
-    if (technique_ == GiTechnique::Lumen) {
-        const LumenSettings lumen = settings.lumen ? *settings.lumen : lumenPreset(kDefaultPreset, scene);
-        lumen_ =
-            std::make_unique<LumenGi>(device, scene, gpuScene, deferred_.width(), deferred_.height(), lumen);
+    switch (technique_) {
+    case GiTechnique::Lumen:
+        gi_ =
+            std::make_unique<LumenGi>(device, scene, gpuScene, deferred_.width(), deferred_.height(),
+                                      settings.lumen ? *settings.lumen : lumenPreset(kDefaultPreset, scene));
+        break;
+    case GiTechnique::Ddgi:
+        gi_ = std::make_unique<DdgiGi>(device, scene, gpuScene, deferred_.width(), deferred_.height(),
+                                       settings.ddgi ? *settings.ddgi : ddgiPreset(kDefaultPreset, scene));
+        break;
+    case GiTechnique::Direct:
+        break;
     }
     for (const scene::Instance& instance : scene.instances) {
         transforms_.push_back(instance.transform);
@@ -78,8 +103,7 @@ FrameRenderer::FrameRenderer(rhi::IDevice& device, const scene::Scene& scene, Gp
 }
 
 float FrameRenderer::indirectScale() const {
-    // The probes gather irradiance E; a Lambertian surface of albedo a sends a x E / pi.
-    return float(std::numbers::inv_pi);
+    return gi_ ? gi_->indirectScale() : 0.0f;
 }
 
 void FrameRenderer::setCamera(const scene::Camera& camera) {
@@ -88,8 +112,8 @@ void FrameRenderer::setCamera(const scene::Camera& camera) {
 }
 
 void FrameRenderer::cameraCut() {
-    if (lumen_) {
-        lumen_->resetHistory();
+    if (gi_) {
+        gi_->resetHistory();
     }
 }
 
@@ -190,8 +214,8 @@ void FrameRenderer::applyPendingChanges(FrameContext& frame) {
         }
         if (lastChanges_.changedLights > 0) {
             deferred_.setLights(*pendingLights_);
-            if (lumen_) {
-                lumen_->setLights(deferred_.sceneLights(), deferred_.lightsVersion(), reach);
+            if (gi_) {
+                gi_->setLights(deferred_.sceneLights(), deferred_.lightsVersion(), reach);
             }
         }
         pendingLights_.reset();
@@ -208,8 +232,8 @@ void FrameRenderer::applyPendingChanges(FrameContext& frame) {
             scene::Instance placed = scene_.instances[instance];
             placed.transform = transform;
             gpuScene_.recordInstance(frame.commands(), instance, placed);
-            if (lumen_) {
-                lumen_->moveInstance(instance, transform, before, after, deferred_.sceneLights());
+            if (gi_) {
+                gi_->moveInstance(instance, transform, before, after, deferred_.sceneLights());
             }
             moved.push_back(before);
             moved.push_back(after);
@@ -226,9 +250,9 @@ void FrameRenderer::applyPendingChanges(FrameContext& frame) {
             scene::Material changed = scene_.materials[material];
             changed.emission = emissions_[material];
             gpuScene_.recordMaterial(frame.commands(), material, changed);
-            if (lumen_) {
+            if (gi_) {
                 for (uint32_t instance : materialUsers_[material]) {
-                    lumen_->instanceMaterialChanged(instance, worldBounds_);
+                    gi_->instanceMaterialChanged(instance, worldBounds_);
                 }
             }
             ++lastChanges_.changedMaterials;
@@ -239,13 +263,13 @@ void FrameRenderer::applyPendingChanges(FrameContext& frame) {
 
 void FrameRenderer::render(FrameContext& frame) {
     applyPendingChanges(frame);
-    if (!lumen_) {
+    if (!gi_) {
         deferred_.render(frame);
         return;
     }
     deferred_.recordLighting(frame);
-    lumen_->record(frame, deferred_, camera_);
-    deferred_.setIndirect(lumen_->irradiance(), indirectScale());
+    gi_->record(frame, deferred_, camera_);
+    deferred_.setIndirect(gi_->indirect(), gi_->indirectScale());
     deferred_.recordComposite(frame);
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // One view of a scene rendered the way a technique asks (docs/gi.md): the deferred renderer,
-// and for lumen its GI between the deferred lighting and the composite. What `lumina render`,
+// and for a GI technique (lumen, DDGI: GiTechniqueRenderer) its GI between the deferred
+// lighting and the composite. What `lumina render`,
 // `lumina bench` and the viewer run.
 //
 //   FrameRenderer renderer(device, scene, gpuScene, {.technique = GiTechnique::Lumen, ...});
@@ -11,8 +12,10 @@
 // applyScene, which finds what an animated or edited copy of the scene changed) take effect at
 // the next render(), which recomputes only what the change touched.
 #include "gi/core/frame_context.h"
+#include "gi/ddgi/ddgi_gi.h"
 #include "gi/deferred/deferred_renderer.h"
 #include "gi/frame/gi_technique.h"
+#include "gi/frame/gi_technique_renderer.h"
 #include "gi/frame/lumen_gi.h"
 #include "gi/gpu_scene/gpu_scene.h"
 
@@ -26,7 +29,15 @@ struct FrameRendererSettings {
     GiTechnique technique = GiTechnique::Lumen;
     DeferredSettings deferred;          // its width and height are the image's (0: the scene's)
     std::optional<LumenSettings> lumen; // none: lumenPreset(kDefaultPreset, scene)
+    std::optional<DdgiSettings> ddgi;   // none: ddgiPreset(kDefaultPreset, scene)
 };
+
+// Settings for `technique` at `preset` (one table, preset.h): the preset's shadow maps and the
+// technique's own settings for `scene`, at width x height (0: the scene's). What lumina bench, the
+// viewer and the tests start from. std::invalid_argument from the presets.
+FrameRendererSettings presetRendererSettings(GiTechnique technique, const Preset& preset,
+                                             const scene::Scene& scene, uint32_t width = 0,
+                                             uint32_t height = 0);
 
 // What the changes applied by the last render() were, for --timings and tests.
 struct SceneChangeStats {
@@ -77,10 +88,13 @@ public:
     GiTechnique technique() const { return technique_; }
     DeferredRenderer& deferred() { return deferred_; }
     const DeferredRenderer& deferred() const { return deferred_; }
-    // Null for the direct technique.
-    const LumenGi* lumen() const { return lumen_.get(); }
+    // The GI technique's renderer; null for the direct technique.
+    const GiTechniqueRenderer* gi() const { return gi_.get(); }
+    // The technique's own renderer when it is that technique, else null.
+    const LumenGi* lumen() const { return dynamic_cast<const LumenGi*>(gi_.get()); }
+    const DdgiGi* ddgi() const { return dynamic_cast<const DdgiGi*>(gi_.get()); }
     // The indirect term the composite multiplies by indirectScale() x albedo; null without GI.
-    rhi::TextureHandle indirect() const { return lumen_ ? lumen_->irradiance() : nullptr; }
+    rhi::TextureHandle indirect() const { return gi_ ? gi_->indirect() : nullptr; }
     float indirectScale() const;
 
 private:
@@ -94,7 +108,7 @@ private:
     GiTechnique technique_;
     scene::Camera camera_;
     DeferredRenderer deferred_;
-    std::unique_ptr<LumenGi> lumen_;
+    std::unique_ptr<GiTechniqueRenderer> gi_;
 
     // The dynamic state the renderer shows, and the edits waiting for the next render().
     std::vector<glm::mat4> transforms_;

@@ -24,31 +24,45 @@ GiTechnique parseGiTechnique(std::string_view name) {
     if (name == "lumen") {
         return GiTechnique::Lumen;
     }
+    if (name == "ddgi") {
+        return GiTechnique::Ddgi;
+    }
     throw std::invalid_argument("unknown GI technique '" + std::string(name) + "' (choose " +
                                 joined(giTechniqueNames()) + ")");
 }
 
 const char* giTechniqueName(GiTechnique technique) {
-    return technique == GiTechnique::Lumen ? "lumen" : "direct";
+    switch (technique) {
+    case GiTechnique::Lumen:
+        return "lumen";
+    case GiTechnique::Ddgi:
+        return "ddgi";
+    default:
+        return "direct";
+    }
 }
 
 std::vector<std::string> giTechniqueNames() {
-    return {"direct", "lumen"};
+    return {"direct", "lumen", "ddgi"};
 }
 
 LumenSettings lumenPreset(std::string_view preset, const scene::Scene& scene) {
     return lumenPreset(findPreset(preset), scene);
 }
 
-LumenSettings lumenPreset(const Preset& knobs, const scene::Scene& scene) {
+float giSceneExtent(const scene::Scene& scene) {
     const scene::Bounds bounds = scene.worldBounds();
     const glm::vec3 extent = bounds.max - bounds.min;
     const float largest = std::max({extent.x, extent.y, extent.z});
     if (!(largest > 0.0f) || !std::isfinite(largest)) {
         throw std::invalid_argument("scene '" + scene.name + "' has no extent: nothing for GI to light");
     }
+    return largest;
+}
 
-    LumenSettings s;
+GiSceneSettings giScenePreset(const Preset& knobs, const scene::Scene& scene) {
+    const float largest = giSceneExtent(scene);
+    GiSceneSettings s;
     s.sdf.mesh.resolution = 64;
     s.sdf.globalResolution = 64;
 
@@ -61,6 +75,13 @@ LumenSettings lumenPreset(const Preset& knobs, const scene::Scene& scene) {
     s.cache.minPaddingUnits = largest / float(s.sdf.mesh.resolution);
     s.lighting.schedule.tilesPerUpdate =
         std::max(1u, knobs.radiosityTexelsPerFrame / (surface_cache::kTileSize * surface_cache::kTileSize));
+    return s;
+}
+
+LumenSettings lumenPreset(const Preset& knobs, const scene::Scene& scene) {
+    const float largest = giSceneExtent(scene);
+    LumenSettings s;
+    static_cast<GiSceneSettings&>(s) = giScenePreset(knobs, scene);
 
     // Near-field hits read their cards, far ones the coarse voxel lighting. Measured on lavapipe
     // against 4096-spp references (docs/gi.md): a tenth of the scene's extent gave the lowest

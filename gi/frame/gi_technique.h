@@ -4,6 +4,7 @@
 //
 //   direct  the deferred renderer alone: no indirect light (what a user gets without GI)
 //   lumen   surface cache with surface radiosity + screen-probe final gather
+//   ddgi    probe volumes traced through the same SDFs and surface cache (gi/ddgi/, docs/ddgi.md)
 //
 //   presets low, medium (default), high: one table for every technique (preset.h).
 #include "gi/frame/preset.h"
@@ -19,20 +20,24 @@
 
 namespace lumina::gi {
 
-enum class GiTechnique { Direct, Lumen };
+enum class GiTechnique { Direct, Lumen, Ddgi };
 
 inline constexpr const char* kDefaultTechnique = "lumen";
 
-// "direct" or "lumen"; std::invalid_argument naming the name and the choices otherwise.
+// "direct", "lumen" or "ddgi"; std::invalid_argument naming the name and the choices otherwise.
 GiTechnique parseGiTechnique(std::string_view name);
 const char* giTechniqueName(GiTechnique technique);
 std::vector<std::string> giTechniqueNames();
 
-// Everything the lumen technique is built with.
-struct LumenSettings {
+// The SDFs and surface cache every SDF-traced technique builds on (gi_scene_representation.h).
+struct GiSceneSettings {
     sdf::SceneSdfSettings sdf;
     surface_cache::SurfaceCacheSettings cache;
     surface_cache::SurfaceLightingSettings lighting;
+};
+
+// Everything the lumen technique is built with.
+struct LumenSettings : GiSceneSettings {
     ScreenProbeSettings probes;
 };
 
@@ -40,6 +45,13 @@ struct LumenSettings {
 // over this many metres in a larger scene (a city): the LOD (surface_cards.h) coarsens what the
 // atlas cannot hold at that density, far cards first.
 inline constexpr double kCardDetailExtentMetres = 64.0;
+
+// The largest side of the scene's world box; std::invalid_argument when it has none.
+float giSceneExtent(const scene::Scene& scene);
+
+// The SDF and surface-cache settings of a preset for `scene`, the same for every technique that
+// traces them. std::invalid_argument for a scene with no extent.
+GiSceneSettings giScenePreset(const Preset& preset, const scene::Scene& scene);
 
 // A preset for `scene`: lengths scale with the scene's extent (the Cornell box is in
 // millimetres, the city in metres), so card texels, card padding and distances follow the

@@ -4,25 +4,34 @@ namespace lumina::gi {
 
 LumenGi::LumenGi(rhi::IDevice& device, const scene::Scene& scene, const GpuScene& gpuScene, uint32_t width,
                  uint32_t height, const LumenSettings& settings)
-    : settings_(settings), sky_(gpuScene.sky), beforeSdf_(device.allocatedMemoryBytes()),
-      sdf_(device, scene, settings.sdf), afterSdf_(device.allocatedMemoryBytes()),
-      cache_(device, scene, gpuScene, sdf_, settings.cache, settings.lighting),
-      afterCache_(device.allocatedMemoryBytes()), probes_(device, width, height, settings.probes),
+    : settings_(settings), scene_(device, scene, gpuScene, settings),
+      beforeProbes_(device.allocatedMemoryBytes()), probes_(device, width, height, settings.probes),
       afterProbes_(device.allocatedMemoryBytes()) {}
 
 void LumenGi::record(FrameContext& frame, const DeferredRenderer& deferred, const scene::Camera& camera) {
-    sdf_.record(frame, camera.position); // the global SDF's cascades follow the camera
-    cache_.update(frame, deferred.shadowedLights(), camera.position); // and the cards' LOD
+    scene_.record(frame, deferred, camera);
     // Near-field hits read their cards' final lighting, far-field hits the cache's voxel lighting
     // (no volume of its own).
     const VoxelLighting cacheVoxels{};
     const ScreenProbeInputs inputs{.gbuffer = deferred.gbuffer(),
                                    .camera = camera,
-                                   .sdf = sdf_,
-                                   .sky = sky_,
+                                   .sdf = scene_.sdf(),
+                                   .sky = scene_.sky(),
                                    .voxelLighting = cacheVoxels,
-                                   .surfaceCache = surfaceCacheView(cache_)};
+                                   .surfaceCache = scene_.surfaceCacheView()};
     probes_.record(frame, inputs);
+}
+
+std::vector<GiMemoryPart> LumenGi::memory() const {
+    std::vector<GiMemoryPart> parts = scene_.memory();
+    parts.push_back({"screen probes", afterProbes_ - beforeProbes_});
+    return parts;
+}
+
+std::vector<GiDebugTexture> LumenGi::debugTextures() const {
+    // Lumen's buffers have views of their own (app/viewer/gi_views.cpp: SDF slices and traces,
+    // card outlines, radiosity probes, the screen probes' maps) and dumps (frame_dump.cpp).
+    return {};
 }
 
 namespace {
@@ -43,22 +52,21 @@ scene::Bounds grown(const scene::Bounds& box, float fraction) {
 
 void LumenGi::moveInstance(uint32_t instance, const glm::mat4& transform, const scene::Bounds& before,
                            const scene::Bounds& after, std::span<const scene::Light> lights) {
-    sdf_.setInstanceTransform(instance, transform);
-    cache_.moveInstance(instance, transform, lights);
+    scene_.moveInstance(instance, transform, lights);
     probes_.invalidateHistory(grown(before, kHistoryMarginFraction), 0.0f);
     probes_.invalidateHistory(grown(after, kHistoryMarginFraction), 0.0f);
 }
 
 void LumenGi::setLights(std::span<const scene::Light> lights, uint64_t lightsVersion,
                         std::span<const scene::Bounds> reach) {
-    cache_.setLights(lights, lightsVersion);
+    scene_.setLights(lights, lightsVersion);
     for (const scene::Bounds& box : reach) {
         probes_.invalidateHistory(box, kLightChangeHistoryKeep);
     }
 }
 
 void LumenGi::instanceMaterialChanged(uint32_t instance, const scene::Bounds& reach) {
-    cache_.instanceMaterialChanged(instance);
+    scene_.instanceMaterialChanged(instance);
     probes_.invalidateHistory(reach, kLightChangeHistoryKeep);
 }
 

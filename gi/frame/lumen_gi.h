@@ -9,29 +9,22 @@
 //   LumenGi gi(device, scene, gpuScene, width, height, lumenPreset("medium", scene));
 //   deferred.recordLighting(frame);
 //   gi.record(frame, deferred, camera);
-//   deferred.setIndirect(gi.irradiance(), 1 / pi);
+//   deferred.setIndirect(gi.indirect(), gi.indirectScale());
 //   deferred.recordComposite(frame);
 #include "gi/core/frame_context.h"
 #include "gi/deferred/deferred_renderer.h"
+#include "gi/frame/gi_scene_representation.h"
 #include "gi/frame/gi_technique.h"
+#include "gi/frame/gi_technique_renderer.h"
 #include "gi/gpu_scene/gpu_scene.h"
 #include "gi/scene/scene.h"
 #include "gi/screen_probes/screen_probe_gather.h"
-#include "gi/sdf/scene_sdf.h"
-#include "gi/surface_cache/surface_cache.h"
 
 #include <span>
 
 namespace lumina::gi {
 
-// GPU memory each subsystem allocated when it was built (device allocation deltas), bytes.
-struct LumenMemory {
-    uint64_t sdf = 0;          // mesh SDF atlas, instance tables, global SDF
-    uint64_t surfaceCache = 0; // atlas layers, capture depth, voxel lighting, radiosity probes
-    uint64_t screenProbes = 0; // probe buffers and the screen-space histories
-};
-
-class LumenGi {
+class LumenGi final : public GiTechniqueRenderer {
 public:
     // `scene` and `gpuScene` must outlive it. Builds (or loads from the cache) the mesh SDFs;
     // throws std::invalid_argument for bad settings and what the subsystems throw (a full
@@ -39,43 +32,35 @@ public:
     LumenGi(rhi::IDevice& device, const scene::Scene& scene, const GpuScene& gpuScene, uint32_t width,
             uint32_t height, const LumenSettings& settings);
 
-    // After deferred.recordLighting(frame) of the frame `camera` shows.
-    void record(FrameContext& frame, const DeferredRenderer& deferred, const scene::Camera& camera);
+    GiTechnique technique() const override { return GiTechnique::Lumen; }
+    void record(FrameContext& frame, const DeferredRenderer& deferred, const scene::Camera& camera) override;
     // The next frame's probes start without history (a camera cut).
-    void resetHistory() { probes_.resetHistory(); }
+    void resetHistory() override { probes_.resetHistory(); }
+    // The surface cache's radiosity has converged (the screen probes follow within frames).
+    bool converged() const override { return scene_.settled(); }
 
-    // A dynamic scene's changes, recorded at the next record() (FrameRenderer applies them).
-    // An instance moved from `before` to `after` (world boxes): its SDF region is recomposed, its
-    // cards placed anew and captured, radiosity restarts near it, and history there is dropped.
+    // An instance moved: its SDF region is recomposed, its cards placed anew and captured,
+    // radiosity restarts near it, and history there is dropped.
     void moveInstance(uint32_t instance, const glm::mat4& transform, const scene::Bounds& before,
-                      const scene::Bounds& after, std::span<const scene::Light> lights);
-    // The lights changed (DeferredRenderer::setLights made `lightsVersion`); `reach` holds the
-    // world boxes the changed lights reached before or reach now.
+                      const scene::Bounds& after, std::span<const scene::Light> lights) override;
     void setLights(std::span<const scene::Light> lights, uint64_t lightsVersion,
-                   std::span<const scene::Bounds> reach);
-    // A material the instance draws changed (emission); `reach` is where its light may land.
-    void instanceMaterialChanged(uint32_t instance, const scene::Bounds& reach);
+                   std::span<const scene::Bounds> reach) override;
+    void instanceMaterialChanged(uint32_t instance, const scene::Bounds& reach) override;
 
-    // RGBA16F irradiance E per pixel (0 on sky); the composite wants E / pi.
-    const rhi::TextureHandle& irradiance() const { return probes_.irradiance(); }
-    const sdf::SceneSdf& sdf() const { return sdf_; }
-    const surface_cache::SurfaceCache& surfaceCache() const { return cache_; }
+    // The screen probes' RGBA16F irradiance E per pixel (0 on sky).
+    rhi::TextureHandle indirect() const override { return probes_.irradiance(); }
+    std::vector<GiMemoryPart> memory() const override;
+    std::vector<GiDebugTexture> debugTextures() const override;
+
+    const sdf::SceneSdf& sdf() const { return scene_.sdf(); }
+    const surface_cache::SurfaceCache& surfaceCache() const { return scene_.surfaceCache(); }
     const ScreenProbeGather& screenProbes() const { return probes_; }
     const LumenSettings& settings() const { return settings_; }
-    LumenMemory memory() const {
-        return {afterSdf_ - beforeSdf_, afterCache_ - afterSdf_, afterProbes_ - afterCache_};
-    }
 
 private:
-    // The allocation marks are members between the subsystems so that members' construction
-    // order measures each one.
     LumenSettings settings_;
-    rhi::TextureHandle sky_; // the GpuScene's: what probe rays that leave the scene see
-    uint64_t beforeSdf_;
-    sdf::SceneSdf sdf_;
-    uint64_t afterSdf_;
-    surface_cache::SurfaceCache cache_;
-    uint64_t afterCache_;
+    GiSceneRepresentation scene_;
+    uint64_t beforeProbes_;
     ScreenProbeGather probes_;
     uint64_t afterProbes_;
 };

@@ -21,7 +21,9 @@ constexpr Preset kPresets[] = {
      .probeSpacing = 16,
      .raysPerProbe = 32,
      .probeHistoryBlend = 0.15f,
-     .screenHistoryBlend = 0.3f},
+     .screenHistoryBlend = 0.3f,
+     .ddgiProbesPerAxis = 8,
+     .ddgiRaysPerProbe = 96},
     {.name = "medium",
      .sunShadowSize = 2048,
      .pointShadowSize = 512,
@@ -31,7 +33,9 @@ constexpr Preset kPresets[] = {
      .probeSpacing = 8,
      .raysPerProbe = 64,
      .probeHistoryBlend = 0.1f,
-     .screenHistoryBlend = 0.2f},
+     .screenHistoryBlend = 0.2f,
+     .ddgiProbesPerAxis = 16,
+     .ddgiRaysPerProbe = 144},
     {.name = "high",
      .sunShadowSize = 4096,
      .pointShadowSize = 1024,
@@ -41,7 +45,9 @@ constexpr Preset kPresets[] = {
      .probeSpacing = 8,
      .raysPerProbe = 128,
      .probeHistoryBlend = 0.1f,
-     .screenHistoryBlend = 0.2f},
+     .screenHistoryBlend = 0.2f,
+     .ddgiProbesPerAxis = 16,
+     .ddgiRaysPerProbe = 256},
 };
 
 } // namespace

@@ -6,6 +6,7 @@
 //   const Preset& p = findPreset("medium");
 //   deferred.sunShadowSize = p.sunShadowSize;   // every technique
 //   LumenSettings lumen = lumenPreset(p, scene); // gi_technique.h: lengths scaled to the scene
+//   DdgiSettings ddgi = ddgiPreset(p, scene);    // gi/ddgi/ddgi_settings.h
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -26,6 +27,9 @@ struct Preset {
     uint32_t raysPerProbe;            // screen-probe rays
     float probeHistoryBlend;          // weight of the new frame in the probe history
     float screenHistoryBlend;         // ... in the full-resolution temporal filter
+    // DDGI (gi/ddgi/ddgi_settings.h).
+    uint32_t ddgiProbesPerAxis; // probes along each axis of a volume fitted to the scene (or a cascade)
+    uint32_t ddgiRaysPerProbe;  // rays per probe and update, the fixed relocation set included
 };
 
 inline constexpr const char* kDefaultPreset = "medium";

@@ -168,6 +168,14 @@ struct SkyEnvironment {
     float intensity = 1.0f;          // the factor already applied to `radiance`
 };
 
+// A DDGI probe volume placed by the scene file ("ddgiVolumes"): probes at the centres of `counts`
+// cells dividing `box` (docs/ddgi.md).
+struct ProbeVolume {
+    Bounds box;
+    glm::uvec3 counts{16};
+    bool operator==(const ProbeVolume&) const = default;
+};
+
 struct Scene {
     std::string name;                 // built-in name, or the file's stem
     std::filesystem::path sourceFile; // the scene file or glTF that was loaded
@@ -186,8 +194,9 @@ struct Scene {
     std::optional<SkyEnvironment> skyEnvironment;
     bool defaultLight = false; // the loader added the default sun and sky (default_light.h)
     ImageSize image;
-    std::string technique; // GI technique name; empty: the renderer's default
-    std::string preset;    // quality preset name; empty: the renderer's default
+    std::string technique;                 // GI technique name; empty: the renderer's default
+    std::string preset;                    // quality preset name; empty: the renderer's default
+    std::vector<ProbeVolume> probeVolumes; // DDGI volumes; empty: fitted to the scene
     Units units;
     LoadReport report;
     // What moves and changes over time (scene_animation.h); animateScene(scene, frame) applies it.

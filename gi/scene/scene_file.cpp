@@ -45,6 +45,35 @@ std::string identifier(const JsonObject& object, std::string_view key, const std
     return value;
 }
 
+// Most probes along one axis of a DDGI volume (its probe buffer holds at most 65535 in all).
+constexpr uint32_t kMaxProbesPerAxis = 256;
+
+ProbeVolume parseProbeVolume(const nlohmann::json& value, const std::string& where,
+                             const std::filesystem::path& file) {
+    const JsonObject object(value, where, file, {"min", "max", "probes"});
+    const std::optional<glm::vec3> min = object.vec3("min");
+    const std::optional<glm::vec3> max = object.vec3("max");
+    if (!min || !max || !glm::all(glm::lessThan(*min, *max))) {
+        object.fail("max", "min and max are required, max above min on every axis");
+    }
+    ProbeVolume volume{.box = {*min, *max}};
+    if (const nlohmann::json* probes = object.array("probes")) {
+        if (probes->size() != 3) {
+            object.fail("probes", "must be [x, y, z] probe counts");
+        }
+        for (int axis = 0; axis < 3; ++axis) {
+            const nlohmann::json& count = (*probes)[size_t(axis)];
+            if (!count.is_number_unsigned() || count.get<uint32_t>() < 2 ||
+                count.get<uint32_t>() > kMaxProbesPerAxis) {
+                object.fail("probes",
+                            "each count must be an integer from 2 to " + std::to_string(kMaxProbesPerAxis));
+            }
+            volume.counts[axis] = count.get<uint32_t>();
+        }
+    }
+    return volume;
+}
+
 Light parseLight(const nlohmann::json& value, const std::string& where, const std::filesystem::path& file) {
     const JsonObject object(value, where, file,
                             {"name", "type", "color", "intensity", "range", "position", "direction",
@@ -184,7 +213,7 @@ SceneFile parseSceneFileText(std::string_view text, const std::filesystem::path&
     const JsonObject root(document, "", file,
                           {"description", "gltf", "generator", "instances", "metresPerUnit", "camera",
                            "lights", "replaceLights", "sun", "sky", "image", "technique", "preset",
-                           "framesPerSecond", "animation"});
+                           "framesPerSecond", "animation", "ddgiVolumes"});
     SceneFile out;
     out.file = file;
     out.description = root.string("description").value_or("");
@@ -259,6 +288,12 @@ SceneFile parseSceneFileText(std::string_view text, const std::filesystem::path&
     if (const auto preset = root.string("preset")) {
         out.preset = identifier(root, "preset", *preset);
     }
+    if (const nlohmann::json* volumes = root.array("ddgiVolumes")) {
+        for (size_t i = 0; i < volumes->size(); ++i) {
+            out.probeVolumes.push_back(
+                parseProbeVolume((*volumes)[i], "ddgiVolumes[" + std::to_string(i) + "]", file));
+        }
+    }
     if (const auto fps = root.number("framesPerSecond")) {
         if (*fps < kMinFramesPerSecond || *fps > kMaxFramesPerSecond) {
             root.fail("framesPerSecond", "must be in [" + std::to_string(int(kMinFramesPerSecond)) + ", " +
@@ -291,6 +326,9 @@ void applySceneFile(const SceneFile& sceneFile, Scene& scene) {
     }
     if (sceneFile.metresPerUnit) {
         scene.units.metresPerUnit = *sceneFile.metresPerUnit;
+    }
+    if (!sceneFile.probeVolumes.empty()) {
+        scene.probeVolumes = sceneFile.probeVolumes;
     }
     if (sceneFile.replaceLights) {
         scene.lights.clear();

@@ -40,6 +40,7 @@ struct SceneFile {
     std::optional<ImageSize> image;
     std::optional<std::string> technique;
     std::optional<std::string> preset;
+    std::vector<ProbeVolume> probeVolumes; // "ddgiVolumes": [{"min", "max", "probes"}]
     std::optional<float> framesPerSecond;
     std::optional<ScriptedAnimation> animation; // frame keys already in seconds
 };

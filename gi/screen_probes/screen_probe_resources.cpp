@@ -1,5 +1,6 @@
 #include "gi/screen_probes/screen_probe_resources.h"
 
+#include "gi/core/gpu_resources.h"
 #include "shaders/common/sdf_scene_shared.h"
 #include "shaders/screen_probes/screen_probe_shared.h"
 
@@ -11,19 +12,12 @@ namespace lumina::gi {
 namespace {
 
 rhi::BufferHandle structured(rhi::IDevice& device, uint64_t count, uint32_t stride, const std::string& name) {
-    return device.createBuffer({.size = count * stride,
-                                .structStride = stride,
-                                .usage = rhi::BufferUsage::Structured | rhi::BufferUsage::Storage,
-                                .debugName = "screen probes: " + name});
+    return createStructuredBuffer(device, count, stride, "screen probes: " + name);
 }
 
 rhi::TextureHandle storage2d(rhi::IDevice& device, rhi::Format format, uint32_t width, uint32_t height,
                              const std::string& name) {
-    return device.createTexture({.format = format,
-                                 .width = width,
-                                 .height = height,
-                                 .usage = rhi::TextureUsage::Storage | rhi::TextureUsage::Sampled,
-                                 .debugName = "screen probes: " + name});
+    return createStorageTexture2d(device, format, width, height, "screen probes: " + name);
 }
 
 } // namespace

@@ -23,34 +23,8 @@ RWStructuredBuffer<float4> gNearField : register(u1);
 #include "surface_cache/card_bvh_traversal.hlsli"
 #define LUMINA_VOXEL_LIGHTING gVoxelLighting
 #include "surface_cache/voxel_lighting_sampling.hlsli"
-
-// The final layer around world point p on `card`: bilinear over the four texels around p's
-// card-space (u, v), each weighted by its coverage so that uncaptured texels (a = 0, rgb = 0) do
-// not darken the surface. The footprint is clamped into the card's rectangle (texel centres from
-// x + 0.5 to x + width - 0.5), so a neighbouring card's texels never bleed in; a hit in the
-// card's padding reads its edge. rgb: radiance; a: the summed weight of covered texels (0 for a
-// card the LOD evicted, so its hits read the voxel lighting).
-float4 cardRadiance(SurfaceCard card, float3 p) {
-    if (card.atlasRect.z == 0u) {
-        return float4(0.0, 0.0, 0.0, 0.0); // evicted by the card LOD: no texels
-    }
-    const float2 rectMin = float2(card.atlasRect.xy);
-    const float2 rectMax = rectMin + float2(card.atlasRect.zw) - 1.0;
-    // Texel-centre coordinates: texel i's centre at i.
-    const float2 x = clamp(cardToAtlasTexel(card, worldToCardSpace(card, p).xy) - 0.5, rectMin, rectMax);
-    const float2 base = floor(x);
-    const float2 f = x - base;
-    float4 sum = float4(0.0, 0.0, 0.0, 0.0);
-    for (uint corner = 0u; corner < 4u; ++corner) {
-        const float2 offset = float2(corner & 1u, corner >> 1);
-        const float2 w2 = lerp(1.0 - f, f, offset);
-        const int2 texel = int2(min(base + offset, rectMax));
-        const float4 v = gFinalLighting.Load(int3(texel, 0));
-        const float w = w2.x * w2.y * v.a;
-        sum += float4(w * v.rgb, w);
-    }
-    return sum.a > LUMINA_SP_MIN_COVERAGE ? float4(sum.rgb / sum.a, sum.a) : float4(0.0, 0.0, 0.0, 0.0);
-}
+#define LUMINA_FINAL_LIGHTING gFinalLighting
+#include "surface_cache/card_radiance.hlsli"
 
 // Radiance leaving the surface at a near-field hit towards the probe, and where it came from.
 float4 nearFieldRadiance(SdfHit hit, float3 direction) {
@@ -79,7 +53,9 @@ void traceNearField(uint ray, float3 origin) {
                                      : nearFieldRadiance(hit, direction);
 }
 
-[numthreads(LUMINA_SP_PROBE_TEXELS, 1, 1)] void main(uint3 group : SV_GroupID, uint t : SV_GroupIndex) {
+[numthreads(LUMINA_SP_PROBE_TEXELS, 1, 1)] void main(uint3 group
+                                                     : SV_GroupID, uint t
+                                                     : SV_GroupIndex) {
     uint probe;
     float3 origin;
     if (!tracedProbe(group, t, probe, origin)) {

@@ -1,5 +1,5 @@
-// Goldens of the lumen frame (docs/goldens.md, docs/gi_tests.md): cornell_box and open_top_box
-// at 64x64, low preset with probes every 8 pixels, after a fixed kFrames frames: every
+// Goldens of the lumen and DDGI frames (docs/goldens.md, docs/gi_tests.md, docs/ddgi.md): cornell_box and
+// open_top_box at 64x64, low preset with probes every 8 pixels, after a fixed kFrames frames: every
 // screen-probe pass's output, every surface-cache layer (the atlas region the cards occupy, one
 // texel in kAtlasStep^2), and the final frame. Regenerate with
 //   LUMINA_UPDATE_GOLDENS=1 ctest -L golden      (Debian 12's lavapipe only)
@@ -12,6 +12,7 @@
 #include "gi/image/display.h"
 #include "gi/scene/scene_loader.h"
 #include "gi/screen_probes/screen_probe_readback.h"
+#include "shaders/ddgi/ddgi_shared.h"
 #include "shaders/screen_probes/screen_probe_shared.h"
 #include "tests/frame/frame_harness.h"
 #include "tests/golden/golden_checks.h"
@@ -53,8 +54,8 @@ constexpr GoldenTolerance kMaterial{.meanAbsError = 0.01, .percentile = 0.99, .p
 constexpr GoldenTolerance kLighting{.meanAbsError = 0.001, .percentile = 0.99, .percentileError = 0.02};
 
 GoldenSpec spec(const std::string& scene, const std::string& target, GoldenTolerance tolerance,
-                float previewMin = 0.0f, float previewMax = 1.0f) {
-    return {.name = scene + "_lumen_" + target,
+                float previewMin = 0.0f, float previewMax = 1.0f, const std::string& technique = "lumen") {
+    return {.name = scene + "_" + technique + "_" + target,
             .tolerance = tolerance,
             .previewMin = previewMin,
             .previewMax = previewMax};
@@ -251,6 +252,78 @@ TEST_P(FrameGoldenTest, ScreenProbePassesSurfaceCacheLayersAndFrameMatchTheirGol
 
     expectGoldensMatch(checks, device().adapter());
 }
+
+// ---- DDGI (docs/ddgi.md) ----
+
+// DDGI's probe atlases: 4^3 probes fitted to the scene, 64 rays, after kFrames updates.
+constexpr uint32_t kDdgiProbesPerAxis = 4;
+constexpr uint32_t kDdgiRays = 64;
+// Distances are stored in cells of the volume; shown over this many cells, so a probe in a room
+// of 4 cells has its distances in [0, 1].
+constexpr float kDdgiDistanceCells = 4.0f;
+
+// The irradiance atlas decoded (E), or the distance atlas normalised, with the tiles of inactive
+// probes (never written: whatever the texture held) zeroed.
+image::Image ddgiAtlasView(const image::Image& atlas, const std::vector<gpu::DdgiProbe>& probes,
+                           const gi::DdgiResources& r, uint32_t tile, bool irradiance) {
+    image::Image out(atlas.width(), atlas.height(), {"R", "G", "B"});
+    for (uint32_t y = 0; y < atlas.height(); ++y) {
+        for (uint32_t x = 0; x < atlas.width(); ++x) {
+            const uint32_t probe = (y / tile) * r.layout.tilesAcross + x / tile;
+            const bool written =
+                probe < probes.size() && probes[probe].offsetAndState.w != LUMINA_DDGI_PROBE_INACTIVE;
+            const image::Rgb v = atlas.rgbAt(x, y);
+            if (!written) {
+                out.setRgb(x, y, {0.0f, 0.0f, 0.0f});
+            } else if (irradiance) {
+                out.setRgb(x, y,
+                           {gpu::ddgiDecodeIrradiance(v.r), gpu::ddgiDecodeIrradiance(v.g),
+                            gpu::ddgiDecodeIrradiance(v.b)});
+            } else {
+                out.setRgb(x, y,
+                           {v.r / kDdgiDistanceCells, v.g / (kDdgiDistanceCells * kDdgiDistanceCells), 0.0f});
+            }
+        }
+    }
+    return irradiance ? irradianceView(out, Alpha::Drop) : out;
+}
+
+class DdgiGoldenTest : public FrameGoldenTest {};
+
+TEST_P(DdgiGoldenTest, ProbeAtlasesAndFrameMatchTheirGoldens) {
+    LUMINA_REQUIRE_KERNELS();
+    const std::string name = std::get<1>(GetParam());
+    FrameHarness h(device(), shaders(), scene::loadScene(name),
+                   {.width = kSize,
+                    .height = kSize,
+                    .technique = gi::GiTechnique::Ddgi,
+                    .adjustDdgi = [](gi::DdgiSettings& s) {
+                        s.probeCounts = glm::uvec3(kDdgiProbesPerAxis);
+                        s.raysPerProbe = kDdgiRays;
+                    }});
+    h.render(kFrames);
+    const gi::DdgiResources& r = h.ddgi().resources();
+    // A single volume here: the (one) layout's tile columns are its probe index modulo a row.
+    ASSERT_EQ(h.ddgi().volumes().size(), 1u);
+    const auto probes = rhi::readBufferAs<gpu::DdgiProbe>(device(), *r.probes);
+    const image::Image hdr = h.hdr();
+    EXPECT_EQ(nonFiniteValues(hdr), 0u);
+    expectGoldensMatch(
+        {{spec(name, "irradiance_atlas", kLighting, 0.0f, 1.0f, "ddgi"),
+          ddgiAtlasView(h.read(r.irradiance), probes, r, LUMINA_DDGI_IRRADIANCE_TILE, true)},
+         {spec(name, "distance_atlas", kLighting, 0.0f, 1.0f, "ddgi"),
+          ddgiAtlasView(h.read(r.distance), probes, r, LUMINA_DDGI_DISTANCE_TILE, false)},
+         {spec(name, "irradiance", kLighting, 0.0f, 1.0f, "ddgi"),
+          irradianceView(h.read(r.sampled), Alpha::Flag)},
+         {spec(name, "frame", kLighting, 0.0f, 1.0f, "ddgi"), lightingView(hdr, 1.0f, Alpha::Drop)}},
+        device().adapter());
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, DdgiGoldenTest,
+                         ::testing::Combine(::testing::ValuesIn(app::compiledApis()),
+                                            ::testing::Values(std::string("cornell_box"),
+                                                              std::string("open_top_box"))),
+                         backendSceneName);
 
 INSTANTIATE_TEST_SUITE_P(Scenes, FrameGoldenTest,
                          ::testing::Combine(::testing::ValuesIn(app::compiledApis()),

@@ -22,6 +22,12 @@ gi::FrameRendererSettings rendererSettings(const scene::Scene& scene, const Fram
             out.lumen->probes.probeSpacing = settings.probeSpacing;
         }
     }
+    if (settings.technique == gi::GiTechnique::Ddgi) {
+        out.ddgi = testDdgiSettings(settings.preset, scene);
+        if (settings.adjustDdgi) {
+            settings.adjustDdgi(*out.ddgi);
+        }
+    }
     return out;
 }
 
@@ -32,6 +38,12 @@ constexpr uint32_t kSamplesPerSubmission = 32;
 
 gi::LumenSettings testLumenSettings(const std::string& name, const scene::Scene& scene) {
     gi::LumenSettings settings = gi::lumenPreset(name, scene);
+    settings.sdf.useCache = false;
+    return settings;
+}
+
+gi::DdgiSettings testDdgiSettings(const std::string& name, const scene::Scene& scene) {
+    gi::DdgiSettings settings = gi::ddgiPreset(name, scene);
     settings.sdf.useCache = false;
     return settings;
 }
@@ -55,7 +67,7 @@ void FrameHarness::render(uint32_t count) {
 }
 
 bool FrameHarness::converged() const {
-    return renderer_.lumen() == nullptr || renderer_.lumen()->surfaceCache().settled();
+    return renderer_.gi() == nullptr || renderer_.gi()->converged();
 }
 
 uint32_t FrameHarness::renderUntilConverged(uint32_t extraFrames, uint32_t maxFrames) {

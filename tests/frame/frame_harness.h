@@ -17,6 +17,7 @@
 #include "gi/scene/scene.h"
 
 #include <cstdint>
+#include <functional>
 #include <string>
 
 namespace lumina::test {
@@ -27,6 +28,9 @@ struct FrameHarnessSettings {
     gi::GiTechnique technique = gi::GiTechnique::Lumen;
     std::string preset = "low";
     uint32_t probeSpacing = 0; // pixels per screen-probe edge; 0: the preset's
+    // Changes to the DDGI preset's settings (the ddgi technique only): fewer probes, a lower
+    // hysteresis so that a test converges sooner.
+    std::function<void(gi::DdgiSettings&)> adjustDdgi = nullptr;
 };
 
 class FrameHarness {
@@ -52,6 +56,7 @@ public:
 
     gi::FrameRenderer& renderer() { return renderer_; }
     const gi::LumenGi& lumen() const { return *renderer_.lumen(); } // the lumen technique only
+    const gi::DdgiGi& ddgi() const { return *renderer_.ddgi(); }    // the ddgi technique only
     const scene::Scene& scene() const { return scene_; }
     gi::PipelineCache& pipelines() { return pipelines_; }
     uint32_t frames() const { return frames_; }
@@ -71,6 +76,8 @@ private:
 // The lumen preset `name` for `scene` as the tests run it: the mesh SDFs built here, not read
 // from the user's cache.
 gi::LumenSettings testLumenSettings(const std::string& name, const scene::Scene& scene);
+// The DDGI preset likewise.
+gi::DdgiSettings testDdgiSettings(const std::string& name, const scene::Scene& scene);
 
 // R, G, B of an image (drops A and any other channel).
 image::Image rgbOnly(const image::Image& image);

@@ -214,5 +214,24 @@ TEST(SceneNames, PathsLoadDirectly) {
               std::string::npos);
 }
 
+TEST(SceneFile, DdgiVolumesArePlacedAndBadOnesNamed) {
+    const TempDir dir;
+    const fs::path good = dir.write(
+        "ddgi.json", sceneFile(", \"ddgiVolumes\": [{\"min\": [0, 0, 0], \"max\": [500, 500, 500], "
+                               "\"probes\": [4, 2, 8]}, {\"min\": [-1, -1, -1], \"max\": [1, 1, 1]}]"));
+    const Scene scene = loadScene(good.string());
+    ASSERT_EQ(scene.probeVolumes.size(), 2u);
+    EXPECT_EQ(scene.probeVolumes[0].counts, glm::uvec3(4, 2, 8));
+    EXPECT_EQ(scene.probeVolumes[0].box.max, glm::vec3(500.0f));
+    EXPECT_EQ(scene.probeVolumes[1].counts, glm::uvec3(16)); // the default
+    for (const char* bad : {"[{\"min\": [0, 0, 0], \"max\": [0, 1, 1]}]",
+                            "[{\"min\": [0, 0, 0], \"max\": [1, 1, 1], \"probes\": [1, 4, 4]}]",
+                            "[{\"min\": [0, 0, 0], \"max\": [1, 1, 1], \"probes\": [4, 4]}]"}) {
+        const fs::path file = dir.write("bad.json", sceneFile(std::string(", \"ddgiVolumes\": ") + bad));
+        EXPECT_NE(errorOf([&] { loadScene(file.string()); }, file).find("ddgiVolumes[0]"), std::string::npos)
+            << bad;
+    }
+}
+
 } // namespace
 } // namespace lumina::scene

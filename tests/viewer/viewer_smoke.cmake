@@ -81,6 +81,15 @@ if(ERR MATCHES "validation")
   message(FATAL_ERROR "[views] validation messages:\n${ERR}")
 endif()
 
+# The DDGI technique's views (GiTechniqueRenderer::debugTextures), each shown once.
+viewer(0 ddgi-views cornell_box --technique ddgi --preset low --size 32x32 --validation --cycle-views --frames 24)
+foreach(name "ddgi: irradiance E" "ddgi: irradiance atlas \\(E\\^\\(1/5\\)\\)" "ddgi: distance atlas \\(cells\\)")
+  expect_match(ddgi-views "${OUT}" "view: ${name}\n")
+endforeach()
+if(ERR MATCHES "validation")
+  message(FATAL_ERROR "[ddgi-views] validation messages:\n${ERR}")
+endif()
+
 run(0 reference render cornell_box --size ${SIZE} --frames ${FRAMES} --out "${WORK}/render.exr")
 run(0 compare compare "${WORK}/render.exr" "${WORK}/viewer.exr" --json "${WORK}/compare.json")
 file(READ "${WORK}/compare.json" json)
