@@ -252,3 +252,20 @@ relmse=$("$linux_lumina" compare "$frames/lumen_vulkan.exr" "$frames/lumen_d3d12
 echo "   relMSE of the D3D12 lumen frame against the Vulkan one: $relmse (must be at most 1e-4)"
 awk -v r="$relmse" 'BEGIN { exit !(r != "" && r <= 1e-4) }' ||
     fail "the D3D12 lumen frame differs from the Vulkan frame (relMSE $relmse); images in $frames"
+
+# The DDGI frame: probe tracing through the SDFs into the surface cache, the irradiance and
+# distance blends, relocation, classification and sampling, 4 frames. No importance sampling
+# feeds back into the rays, so it must match Vulkan to rounding (it matched bit for bit).
+echo "== wine: lumina.exe render cornell_box --technique ddgi on D3D12, against Vulkan"
+run_wine "$build/app/lumina.exe" render cornell_box --api d3d12 --technique ddgi --preset low --size 32x32 \
+    --frames 4 --out "Z:$frames/ddgi_d3d12.exr" >"$frames/ddgi_d3d12.log" 2>&1 ||
+    { cat "$frames/ddgi_d3d12.log" >&2; fail "lumina.exe render (ddgi) failed under Wine; log: $frames/ddgi_d3d12.log"; }
+check_vkd3d_validation "$frames/ddgi_d3d12.log" "the DDGI frame"
+(unset VK_INSTANCE_LAYERS VK_LAYER_ENABLES VK_ICD_FILENAMES VKD3D_CONFIG LUMINA_SHADER_DIR
+ "$linux_lumina" render cornell_box --technique ddgi --preset low --size 32x32 --frames 4 \
+     --out "$frames/ddgi_vulkan.exr" >"$frames/ddgi_vulkan.log" 2>&1) ||
+    fail "the Vulkan DDGI render failed; log: $frames/ddgi_vulkan.log"
+relmse=$("$linux_lumina" compare "$frames/ddgi_vulkan.exr" "$frames/ddgi_d3d12.exr" | awk '/relMSE/ {print $2; exit}')
+echo "   relMSE of the D3D12 DDGI frame against the Vulkan one: $relmse (must be at most 1e-6)"
+awk -v r="$relmse" 'BEGIN { exit !(r != "" && r <= 1e-6) }' ||
+    fail "the D3D12 DDGI frame differs from the Vulkan frame (relMSE $relmse); images in $frames"
