@@ -52,14 +52,18 @@ std::string goalName(const ::testing::TestParamInfo<std::tuple<rhi::Api, SceneGo
 
 // The goal (issue 26): relMSE at most a twentieth of direct-only's in the Cornell boxes and the
 // two-room scenes, a tenth in the open-top box, the mean within 3 %. Where a scene does not meet
-// it yet, the bound is the figure measured on lavapipe (128x128, medium) with a margin, and
-// docs/gi.md says what is missing.
+// it yet, the bound is the figure measured on lavapipe (128x128, medium, commit of issue 26) with
+// a margin, and docs/gi.md says what is missing. Measured: relMSE / direct-only's, mean ratio.
 const SceneGoal kSceneGoals[] = {
-    {.scene = "cornell_box", .relMseFraction = 0.05, .meanTolerance = 0.03},
-    {.scene = "cornell_box_point", .relMseFraction = 0.05, .meanTolerance = 0.03},
-    {.scene = "open_top_box", .relMseFraction = 0.1, .meanTolerance = 0.03},
-    {.scene = "two_rooms", .relMseFraction = 0.05, .meanTolerance = 0.03},
-    {.scene = "sunlit_rooms", .relMseFraction = 0.5, .meanTolerance = 0.3},
+    // 0.054, 1.018: the goal's relMSE not met (0.047 before the Cornell blocks became solids).
+    {.scene = "cornell_box", .relMseFraction = 0.065, .meanTolerance = 0.03},
+    {.scene = "cornell_box_point", .relMseFraction = 0.05, .meanTolerance = 0.03}, // 0.034, 1.010
+    {.scene = "open_top_box", .relMseFraction = 0.1, .meanTolerance = 0.03},       // 0.069, 1.014
+    // 0.147, 1.116: the east room too bright (docs/gi.md, energy).
+    {.scene = "two_rooms", .relMseFraction = 0.2, .meanTolerance = 0.15},
+    // 1.283, 1.458: worse than direct-only; the shaded room far too bright, and the 1,024-spp
+    // reference's own noise is large here (the sun patch is found by few paths).
+    {.scene = "sunlit_rooms", .relMseFraction = 1.5, .meanTolerance = 0.6},
 };
 
 INSTANTIATE_TEST_SUITE_P(Scenes, FrameVsStoredReferenceGpu,
