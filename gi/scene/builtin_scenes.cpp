@@ -26,7 +26,9 @@ constexpr std::array kBuiltins = {
     BuiltinScene{"furnace_0.5", [] { return makeFurnace(0.5f); }},
     BuiltinScene{"furnace_0.8", [] { return makeFurnace(0.8f); }},
     BuiltinScene{"furnace_0.95", [] { return makeFurnace(0.95f); }},
-    BuiltinScene{"furnace_0.99", [] { return makeFurnace(0.99f); }}, BuiltinScene{"atrium", nullptr},
+    BuiltinScene{"furnace_0.99", [] { return makeFurnace(0.99f); }},
+    BuiltinScene{"two_rooms", [] { return makeTwoRooms(); }},
+    BuiltinScene{"sunlit_rooms", [] { return makeSunlitRooms(); }}, BuiltinScene{"atrium", nullptr},
     BuiltinScene{"city", nullptr},
     BuiltinScene{"two_cylinder_engine", nullptr}, // a glTF of assimp-testmodels
     // Dynamic scenes: their scene files animate them (docs/scenes.md, "Animation").

@@ -143,6 +143,27 @@ bool hasBoundaryEdges(std::span<const glm::vec3> positions, std::span<const uint
     return std::any_of(edges.begin(), edges.end(), [](const auto& edge) { return edge.second % 2 != 0; });
 }
 
+bool everyFaceBacksOntoInside(const SdfAtlas& atlas, uint32_t volume, std::span<const glm::vec3> positions,
+                              std::span<const uint32_t> indices) {
+    const float voxel = atlas.volumes.at(volume).volumeMinAndVoxelSize.w;
+    bool anyFace = false;
+    for (size_t t = 0; t + 2 < indices.size(); t += 3) {
+        const glm::vec3 a = positions[indices[t]], b = positions[indices[t + 1]],
+                        c = positions[indices[t + 2]];
+        const glm::vec3 cross = glm::cross(b - a, c - a);
+        const float length = glm::length(cross);
+        if (!(length > 0.0f)) {
+            continue; // degenerate: no side to test
+        }
+        anyFace = true;
+        const glm::vec3 behind = (a + b + c) / 3.0f - (cross / length) * voxel;
+        if (!(sampleSdf(atlas, volume, behind) < 0.0f)) {
+            return false;
+        }
+    }
+    return anyFace;
+}
+
 SceneSdfData buildSceneSdfData(const scene::Scene& scene, const SceneSdfSettings& settings) {
     validate(settings.mesh);
     SceneSdfData data;
@@ -246,7 +267,12 @@ SceneSdfData buildSceneSdfData(const scene::Scene& scene, const SceneSdfSettings
     for (MeshSdfReport& line : data.report.meshes) {
         const scene::Mesh& mesh = scene.meshes[line.mesh];
         gpu::SdfVolumeDesc& volume = data.atlas.volumes[data.meshVolume[line.mesh]];
-        if (hasBoundaryEdges(mesh.positions, mesh.indices)) {
+        // A mesh with boundary edges is open unless every face has the mesh's inside behind it:
+        // a solid whose missing faces lie against other geometry (a wall built of boxes without
+        // the faces it shares with the floor) is resolved by its signed field and needs no
+        // shell, which would thicken it and narrow every doorway in it (docs/gi.md, energy).
+        if (hasBoundaryEdges(mesh.positions, mesh.indices) &&
+            !everyFaceBacksOntoInside(data.atlas, data.meshVolume[line.mesh], mesh.positions, mesh.indices)) {
             volume.dims.w |= LUMINA_SDF_VOLUME_OPEN;
         }
         line.open = (volume.dims.w & LUMINA_SDF_VOLUME_OPEN) != 0;

@@ -108,8 +108,14 @@ gpu::SdfInstanceDesc makeInstanceDesc(const gpu::SdfVolumeDesc& volume, uint32_t
 
 // Whether a triangle mesh has boundary edges: an edge (vertices compared by position, so
 // seams of split vertices do not count) used by an odd number of triangles. Such meshes are
-// flagged LUMINA_SDF_VOLUME_OPEN.
+// flagged LUMINA_SDF_VOLUME_OPEN unless everyFaceBacksOntoInside.
 bool hasBoundaryEdges(std::span<const glm::vec3> positions, std::span<const uint32_t> indices);
+
+// Whether the mesh's SDF (`volume` of `atlas`, mesh units) is negative one voxel behind the
+// centre of every non-degenerate triangle (front faces wind counter-clockwise): the mesh is a
+// solid, whatever faces it lacks. False for a mesh of no such triangle.
+bool everyFaceBacksOntoInside(const SdfAtlas& atlas, uint32_t volume, std::span<const glm::vec3> positions,
+                              std::span<const uint32_t> indices);
 glm::mat4 objectToWorld(const gpu::SdfInstanceDesc& instance);
 bvh::Aabb worldBox(const gpu::SdfInstanceDesc& instance);
 

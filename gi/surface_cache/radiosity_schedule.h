@@ -15,7 +15,7 @@ namespace lumina::surface_cache {
 struct RadiosityScheduleSettings {
     uint32_t tilesPerUpdate = 4096; // the budget: atlas tiles (16x16 texels) per update; 1 M texels
     float tolerance = 0.002f;       // stop when maxAlbedo^bounces falls below this...
-    uint32_t maxBounces = 256;      // ...or after this many bounces, whichever comes first
+    uint32_t maxBounces = 640;      // ...or after this many bounces (rho = 0.99 needs 619), whichever first
     uint32_t refinementPasses = 16; // then this many averaged passes over every tile
 };
 

@@ -257,9 +257,9 @@ void SurfaceCache::update(gi::FrameContext& frame, const std::optional<gi::Shado
     // Combine and voxel lighting only when what they read changed: the capture, the direct
     // light, or the indirect light the last update's radiosity wrote.
     if (!dirty.empty() || directChanged || indirectChanged_) {
-        combine_.record(frame, atlas_, allTiles_);
+        combine_.record(frame, atlas_, allTiles_, updates_);
         const AtlasSurfaceBindings surfaces{atlas_, tileOwner_.texture(), cardBuffer_, capture_.depth()};
-        voxels_.record(frame, surfaces, allTiles_);
+        voxels_.record(frame, surfaces, allTiles_, updates_);
         indirectChanged_ = false;
     } else {
         frame.skip(SurfaceCacheCombinePass::kPassName, "nothing changed");

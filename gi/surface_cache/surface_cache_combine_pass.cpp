@@ -5,14 +5,14 @@
 namespace lumina::surface_cache {
 
 void SurfaceCacheCombinePass::record(gi::FrameContext& frame, const SurfaceCacheAtlas& atlas,
-                                     const AtlasTileList& tiles) const {
+                                     const AtlasTileList& tiles, uint32_t update) const {
     if (tiles.count() == 0) {
         frame.skip(kPassName, "no tiles to combine");
         return;
     }
     frame.compute(kPassName, "surface_cache/surface_cache_combine")
         .constants(
-            gpu::AtlasTileListConstants{.atlas = {atlas.size(), tiles.count(), tiles.tilesPerRow(), 0}})
+            gpu::AtlasTileListConstants{.atlas = {atlas.size(), tiles.count(), tiles.tilesPerRow(), update}})
         .read(0, atlas.albedo)
         .read(1, atlas.surface)
         .read(2, atlas.direct)

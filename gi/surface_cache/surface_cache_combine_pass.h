@@ -13,7 +13,9 @@ public:
     static constexpr const char* kPassName = "surface cache: combine";
 
     // Records the pass over `tiles`, or a skip naming why when the list is empty.
-    void record(gi::FrameContext& frame, const SurfaceCacheAtlas& atlas, const AtlasTileList& tiles) const;
+    // `update` (the surface cache's update count) seeds the dither of the half rounding.
+    void record(gi::FrameContext& frame, const SurfaceCacheAtlas& atlas, const AtlasTileList& tiles,
+                uint32_t update) const;
 };
 
 } // namespace lumina::surface_cache

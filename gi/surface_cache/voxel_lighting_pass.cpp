@@ -51,7 +51,7 @@ void VoxelLightingPass::recordClear(rhi::ICommandList& commands) const {
 }
 
 void VoxelLightingPass::record(gi::FrameContext& frame, const AtlasSurfaceBindings& surfaces,
-                               const AtlasTileList& tiles) const {
+                               const AtlasTileList& tiles, uint32_t update) const {
     if (tiles.count() == 0) {
         frame.skip(kInjectPassName, "no tiles to inject");
         frame.skip(kResolvePassName, "no tiles to inject");
@@ -59,7 +59,7 @@ void VoxelLightingPass::record(gi::FrameContext& frame, const AtlasSurfaceBindin
     }
     const gpu::VoxelInjectConstants constants{
         .grid = grid_,
-        .atlas = {surfaces.atlas.size(), tiles.count(), tiles.tilesPerRow(), 0},
+        .atlas = {surfaces.atlas.size(), tiles.count(), tiles.tilesPerRow(), update},
         .buriedProbeDistance = {buriedDistance_, 0.0f, 0.0f, 0.0f}};
     sdf_.bindForTracing(frame.compute(kInjectPassName, "surface_cache/voxel_lighting.inject"))
         .constants(constants)

@@ -40,9 +40,9 @@ public:
     // Zeroes the accumulator; record once before the first update.
     void recordClear(rhi::ICommandList& commands) const;
     // Injects the listed tiles' final radiance and resolves the volume; skips both (with the
-    // reason) when the list is empty.
-    void record(gi::FrameContext& frame, const AtlasSurfaceBindings& surfaces,
-                const AtlasTileList& tiles) const;
+    // reason) when the list is empty. `update` seeds the dither of the half rounding.
+    void record(gi::FrameContext& frame, const AtlasSurfaceBindings& surfaces, const AtlasTileList& tiles,
+                uint32_t update) const;
 
     const gpu::VoxelGridInfo& grid() const { return grid_; }
     const rhi::TextureHandle& volume() const { return volume_; }

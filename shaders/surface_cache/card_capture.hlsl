@@ -9,8 +9,8 @@
 // surface nearest the capture plane and the slab's ends clip away what other cards hold.
 // clearVsMain / clearPsMain first reset the rectangle: zero texels, depth at the slab's back.
 #include "common/bindings.hlsli"
-#include "common/lights_shared.h"
 #include "common/instance_transform.hlsli"
+#include "common/lights_shared.h"
 #include "common/scene_shared.h"
 #include "surface_cache/card_capture_shared.h"
 #include "surface_cache/surface_cache_lighting_shared.h"
@@ -24,11 +24,13 @@ Texture2DArray<float4> gTextures : register(t3);
 StructuredBuffer<SurfaceCard> gCards : register(t4);
 SamplerState gMaterialSampler : register(s0);
 
-// Albedo is rounded down to a half-float value (floorToHalf), so that the write stores it
-// exactly and never above the material's: in a closed scene the radiance is Le / (1 - rho), 20
-// times as sensitive to rho as rho itself at rho = 0.95, so rounding up would push the
-// converged radiance past the analytic value (fp16 0.99 rounds to 0.990234: 2.4 % over), and
-// RGBA8's 1/255 steps alone moved the rho = 0.95 furnace 1.9 % (docs/surface_cache.md).
+// Albedo is rounded to one of its two neighbouring half-float values, up with the probability
+// that makes the mean over texels the material's (roundToHalfDithered, a fixed dither per atlas
+// texel), so that the write stores it exactly and the light a surface reflects is, on average,
+// the material's: in a closed scene the radiance is Le / (1 - rho), 100 times as sensitive to rho
+// as rho itself at rho = 0.99, where rounding every texel down (to 0.989746) lost 2.5 % and
+// rounding to nearest (0.990234) gained 2.4 %; RGBA8's 1/255 steps alone moved the rho = 0.95
+// furnace 1.9 % (docs/surface_cache.md, docs/gi.md).
 
 struct Varyings {
     float4 position : SV_Position;
@@ -37,7 +39,8 @@ struct Varyings {
 };
 
 struct CaptureTargets {
-    float4 albedo : SV_Target0;   // RGBA16F: linear albedo, rounded down; a = 1 where a surface was captured
+    float4 albedo
+        : SV_Target0; // RGBA16F: linear albedo, dithered to a half; a = 1 where a surface was captured
     float4 normal : SV_Target1;   // RGBA16F: unit world normal on the card's side; a = 1
     float4 material : SV_Target2; // RGBA16F: emitted radiance; a = material index
 };
@@ -72,7 +75,9 @@ CaptureTargets psMain(Varyings input) {
         normal = -normal;
     }
     CaptureTargets output;
-    output.albedo = float4(floorToHalf(material.baseColor.rgb * sampleLayer(material.textures.x, input.uv)), 1.0);
+    const float3 albedo = material.baseColor.rgb * sampleLayer(material.textures.x, input.uv);
+    output.albedo = float4(
+        roundToHalfDithered(float4(albedo, 1.0), ditherOf(uint3(uint2(input.position.xy), 2u), 0u)).rgb, 1.0);
     output.normal = float4(normal, 1.0);
     const float3 emission = material.emission.rgb * sampleLayer(material.textures.y, input.uv);
     output.material = float4(emittedRadiance(emission, material.textures.z, cosFront), float(gDraw.material));

@@ -52,10 +52,9 @@ LUMINA_UAV_FORMAT(rgba16f) RWTexture2D<float4> gIndirect : register(u1);
 // Probe texels tried in order: the 2x2 centre of the 4x4 block first, then its border, so a
 // probe sits near its block's middle but still exists on a block only partly covered or
 // partly under another object.
-static const uint2 kProbeTexelOrder[16] = {uint2(1, 1), uint2(2, 1), uint2(1, 2), uint2(2, 2),
-                                           uint2(0, 0), uint2(1, 0), uint2(2, 0), uint2(3, 0),
-                                           uint2(0, 1), uint2(3, 1), uint2(0, 2), uint2(3, 2),
-                                           uint2(0, 3), uint2(1, 3), uint2(2, 3), uint2(3, 3)};
+static const uint2 kProbeTexelOrder[16] = {
+    uint2(1, 1), uint2(2, 1), uint2(1, 2), uint2(2, 2), uint2(0, 0), uint2(1, 0), uint2(2, 0), uint2(3, 0),
+    uint2(0, 1), uint2(3, 1), uint2(0, 2), uint2(3, 2), uint2(0, 3), uint2(1, 3), uint2(2, 3), uint2(3, 3)};
 
 uint probesPerRow() {
     return gConstants.atlas.x / LUMINA_RADIOSITY_PROBE_SPACING;
@@ -92,7 +91,8 @@ float3 finiteOrZero(float3 v) {
     return (any(isnan(v)) || any(isinf(v))) ? float3(0.0f, 0.0f, 0.0f) : v;
 }
 
-[numthreads(64, 1, 1)] void trace(uint3 id : SV_DispatchThreadID) {
+[numthreads(64, 1, 1)] void trace(uint3 id
+                                  : SV_DispatchThreadID) {
     uint2 probe;
     if (!listedProbe(id.xy, probe)) {
         return;
@@ -143,7 +143,8 @@ float3 finiteOrZero(float3 v) {
     float4 shG = shR;
     float4 shB = shR;
     for (uint ray = 0u; ray < LUMINA_RADIOSITY_RAYS; ++ray) {
-        float cosTheta = (float(ray / LUMINA_RADIOSITY_RAYS_PER_SIDE) + 0.5f) / float(LUMINA_RADIOSITY_RAYS_PER_SIDE);
+        float cosTheta =
+            (float(ray / LUMINA_RADIOSITY_RAYS_PER_SIDE) + 0.5f) / float(LUMINA_RADIOSITY_RAYS_PER_SIDE);
         float phi = 2.0f * LUMINA_PI * (float(ray % LUMINA_RADIOSITY_RAYS_PER_SIDE) + rotation) /
                     float(LUMINA_RADIOSITY_RAYS_PER_SIDE);
         float sinTheta = sqrt(max(1.0f - cosTheta * cosTheta, 0.0f));
@@ -163,7 +164,8 @@ float3 finiteOrZero(float3 v) {
             radiance = finiteOrZero(sampleVoxelLighting(gConstants.grid, hit.positionAndT.xyz, hitNormal));
         }
         // Monte Carlo projection with the uniform hemisphere pdf 1 / (2 pi).
-        float4 basis = float4(LUMINA_SH_Y00, LUMINA_SH_Y1 * dir) * (2.0f * LUMINA_PI / float(LUMINA_RADIOSITY_RAYS));
+        float4 basis =
+            float4(LUMINA_SH_Y00, LUMINA_SH_Y1 * dir) * (2.0f * LUMINA_PI / float(LUMINA_RADIOSITY_RAYS));
         shR += radiance.r * basis;
         shG += radiance.g * basis;
         shB += radiance.b * basis;
@@ -186,7 +188,8 @@ float3 finiteOrZero(float3 v) {
     gProbesOut[probeIndex(probe)] = result;
 }
 
-[numthreads(64, 1, 1)] void filter(uint3 id : SV_DispatchThreadID) {
+    [numthreads(64, 1, 1)] void filter(uint3 id
+                                       : SV_DispatchThreadID) {
     uint2 probe;
     if (!listedProbe(id.xy, probe)) {
         return;
@@ -228,12 +231,15 @@ float3 finiteOrZero(float3 v) {
 // Irradiance of L1 SH at normal n, the cosine lobe's band factors pi and 2 pi / 3
 // (Ramamoorthi and Hanrahan 2001); L1 can dip below zero opposite bright light: clamped.
 float shIrradiance(float4 sh, float3 n) {
-    return max(LUMINA_PI * LUMINA_SH_Y00 * sh.x + (2.0f * LUMINA_PI / 3.0f) * LUMINA_SH_Y1 * dot(sh.yzw, n), 0.0f);
+    return max(LUMINA_PI * LUMINA_SH_Y00 * sh.x + (2.0f * LUMINA_PI / 3.0f) * LUMINA_SH_Y1 * dot(sh.yzw, n),
+               0.0f);
 }
 
-[numthreads(64, 1, 1)] void integrate(uint3 id : SV_DispatchThreadID) {
+[numthreads(64, 1, 1)] void integrate(uint3 id
+                                      : SV_DispatchThreadID) {
     uint entry, item;
-    if (!tileListItem(id.xy, gConstants.atlas.y, LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE, entry, item)) {
+    if (!tileListItem(id.xy, gConstants.atlas.y, LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE, entry,
+                      item)) {
         return;
     }
     uint2 texel = tileListTexel(gTiles[entry], gConstants.atlas.z, item);
@@ -242,7 +248,9 @@ float shIrradiance(float4 sh, float3 n) {
     float3 irradiance = float3(0.0f, 0.0f, 0.0f);
     if (normal.a != 0.0f && probe.normalAndValid.w != 0.0f) {
         float3 n = normalize(normal.xyz);
-        irradiance = finiteOrZero(float3(shIrradiance(probe.r, n), shIrradiance(probe.g, n), shIrradiance(probe.b, n)));
+        irradiance = finiteOrZero(
+            float3(shIrradiance(probe.r, n), shIrradiance(probe.g, n), shIrradiance(probe.b, n)));
     }
-    gIndirect[texel] = roundToHalf(float4(irradiance, 1.0f));
+    gIndirect[texel] =
+        roundToHalfDithered(float4(irradiance, 1.0f), ditherOf(uint3(texel, 1u), gConstants.atlas.w));
 }

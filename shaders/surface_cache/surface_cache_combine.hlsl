@@ -24,9 +24,11 @@ float3 finiteOrZero(float3 v) {
     return (any(isnan(v)) || any(isinf(v))) ? float3(0.0f, 0.0f, 0.0f) : v;
 }
 
-[numthreads(64, 1, 1)] void main(uint3 id : SV_DispatchThreadID) {
+[numthreads(64, 1, 1)] void main(uint3 id
+                                 : SV_DispatchThreadID) {
     uint entry, item;
-    if (!tileListItem(id.xy, gConstants.atlas.y, LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE, entry, item)) {
+    if (!tileListItem(id.xy, gConstants.atlas.y, LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE, entry,
+                      item)) {
         return;
     }
     uint tile = gTiles[entry];
@@ -39,7 +41,9 @@ float3 finiteOrZero(float3 v) {
     }
     float3 albedo = gAlbedo.Load(int3(texel, 0)).rgb;
     float3 emission = finiteOrZero(gSurface.Load(int4(texel, 1, 0)).rgb);
-    float3 irradiance = finiteOrZero(gDirect.Load(int3(texel, 0)).rgb) + finiteOrZero(gIndirect.Load(int3(texel, 0)).rgb);
+    float3 irradiance =
+        finiteOrZero(gDirect.Load(int3(texel, 0)).rgb) + finiteOrZero(gIndirect.Load(int3(texel, 0)).rgb);
     float3 radiance = max(irradiance, 0.0f) * albedo * LUMINA_INV_PI + max(emission, 0.0f);
-    gFinal[texel] = roundToHalf(float4(min(radiance, LUMINA_HALF_MAX), 1.0f));
+    gFinal[texel] = roundToHalfDithered(float4(min(radiance, LUMINA_HALF_MAX), 1.0f),
+                                        ditherOf(uint3(texel, 0u), gConstants.atlas.w));
 }

@@ -48,6 +48,32 @@ float roundToHalf1(float v) {
 float4 roundToHalf(float4 v) {
     return float4(roundToHalf1(v.x), roundToHalf1(v.y), roundToHalf1(v.z), roundToHalf1(v.w));
 }
+// Unbiased (stochastic) rounding to a neighbouring half: up with probability equal to the
+// fraction of the spacing v lies above the half below it, given u uniform in [0, 1). Nearest
+// rounding stalls a slowly converging loop: once a bounce adds less than half a spacing the sum
+// stops growing, a shortfall of (spacing / 2) / (1 - rho), 3 % at rho = 0.99 (docs/gi.md). With
+// a fresh u every update the expected value is v, so the loop converges to the right sum.
+float roundToHalfDithered1(float v, float u) {
+    return v > 0.0f ? floor(v / halfSpacing(v) + u) * halfSpacing(v) : 0.0f;
+}
+float4 roundToHalfDithered(float4 v, float u) {
+    return float4(roundToHalfDithered1(v.x, u), roundToHalfDithered1(v.y, u), roundToHalfDithered1(v.z, u),
+                  roundToHalfDithered1(v.w, u));
+}
+// A well-mixed 32-bit hash (Wellons' lowbias32).
+uint hashUint(uint x) {
+    x ^= x >> 16;
+    x *= 0x7feb352du;
+    x ^= x >> 15;
+    x *= 0x846ca68bu;
+    x ^= x >> 16;
+    return x;
+}
+// A uniform number in [0, 1) per texel (or voxel) and update: the dither of roundToHalfDithered.
+float ditherOf(uint3 key, uint update) {
+    return float(hashUint(key.x ^ hashUint(key.y ^ hashUint(key.z ^ hashUint(update)))) >> 8) *
+           (1.0f / 16777216.0f);
+}
 // The list entry and the item within its tile (texel or probe, row-major) of thread `id` of a
 // tile-list dispatch of `itemsPerTile` items a tile; false past the list's `count` entries.
 bool tileListItem(uint2 id, uint count, uint itemsPerTile, out uint entry, out uint item) {
@@ -57,20 +83,14 @@ bool tileListItem(uint2 id, uint count, uint itemsPerTile, out uint entry, out u
     return entry < count;
 }
 
-// The half at or below v (never above: albedo, see card_capture.hlsl).
-float floorToHalf1(float v) {
-    return v > 0.0f ? floor(v / halfSpacing(v)) * halfSpacing(v) : 0.0f;
-}
-float3 floorToHalf(float3 v) {
-    return float3(floorToHalf1(v.x), floorToHalf1(v.y), floorToHalf1(v.z));
-}
 #endif
 
 LUMINA_GPU_NAMESPACE_BEGIN
 
 // A list of atlas tiles to process (row-major tile indices in a StructuredBuffer<uint>).
 struct AtlasTileListConstants {
-    uint4 atlas; // x: atlas size in texels; y: tiles in the list; z: tiles per atlas row; w: 0
+    uint4 atlas; // x: atlas size in texels; y: tiles in the list; z: tiles per atlas row; w: update
+                 // index (combine: the dither of its half rounding)
 };
 LUMINA_STATIC_ASSERT_SIZE(AtlasTileListConstants, 16);
 
@@ -95,7 +115,8 @@ LUMINA_STATIC_ASSERT_SIZE(VoxelGridInfo, 32);
 
 struct VoxelInjectConstants {
     VoxelGridInfo grid;
-    uint4 atlas; // x: atlas size in texels; y: tiles in the list; z: tiles per atlas row; w: 0
+    uint4 atlas; // x: atlas size in texels; y: tiles in the list; z: tiles per atlas row; w: update
+                 // index (the dither of resolve's half rounding)
     float4
         buriedProbeDistance; // x: a texel is buried when the global SDF is negative this far in front (world)
 };

@@ -33,9 +33,11 @@ LUMINA_UAV_FORMAT(rgba16f) RWTexture3D<float4> gVoxels : register(u1);
 #define LUMINA_CAPTURE_DEPTH gCaptureDepth
 #include "surface_cache/surface_cache_texel.hlsli"
 
-[numthreads(64, 1, 1)] void inject(uint3 id : SV_DispatchThreadID) {
+[numthreads(64, 1, 1)] void inject(uint3 id
+                                   : SV_DispatchThreadID) {
     uint entry, item;
-    if (!tileListItem(id.xy, gConstants.atlas.y, LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE, entry, item)) {
+    if (!tileListItem(id.xy, gConstants.atlas.y, LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE, entry,
+                      item)) {
         return;
     }
     uint2 texel = tileListTexel(gTiles[entry], gConstants.atlas.z, item);
@@ -65,7 +67,8 @@ LUMINA_UAV_FORMAT(rgba16f) RWTexture3D<float4> gVoxels : register(u1);
         }
         uint face = 2u * axis + (n[axis] < 0.0f ? 1u : 0u);
         uint3 fixedPoint = uint3(radiance * weight * LUMINA_VOXEL_FIXED_POINT_SCALE + 0.5f);
-        uint base = 4u * uint(int(face) * dims.x + voxel.x + LUMINA_VOXEL_FACES * dims.x * (voxel.y + dims.y * voxel.z));
+        uint base = 4u * uint(int(face) * dims.x + voxel.x +
+                              LUMINA_VOXEL_FACES * dims.x * (voxel.y + dims.y * voxel.z));
         uint ignored;
         InterlockedAdd(gAccumulator[base + 0u], fixedPoint.x, ignored);
         InterlockedAdd(gAccumulator[base + 1u], fixedPoint.y, ignored);
@@ -74,7 +77,8 @@ LUMINA_UAV_FORMAT(rgba16f) RWTexture3D<float4> gVoxels : register(u1);
     }
 }
 
-[numthreads(4, 4, 4)] void resolve(uint3 id : SV_DispatchThreadID) {
+    [numthreads(4, 4, 4)] void resolve(uint3 id
+                                       : SV_DispatchThreadID) {
     // id.x runs over the faces' side-by-side columns.
     uint3 dims = uint3(LUMINA_VOXEL_FACES * gConstants.grid.dims.x, gConstants.grid.dims.yz);
     if (any(id >= dims)) {
@@ -87,7 +91,7 @@ LUMINA_UAV_FORMAT(rgba16f) RWTexture3D<float4> gVoxels : register(u1);
         float3 sum = float3(gAccumulator[base + 0u], gAccumulator[base + 1u], gAccumulator[base + 2u]);
         value = float4(sum / float(weight), 1.0f);
     }
-    gVoxels[id] = roundToHalf(value);
+    gVoxels[id] = roundToHalfDithered(value, ditherOf(id, gConstants.atlas.w ^ 0x9e3779b9u));
     for (uint c = 0u; c < 4u; ++c) {
         gAccumulator[base + c] = 0u;
     }

@@ -90,13 +90,17 @@ std::string furnaceName(const ::testing::TestParamInfo<std::tuple<rhi::Api, Furn
 }
 
 // Measured on lavapipe (64x64, low preset; docs/gi_tests.md): furnace_0.5 mean -0.017%, worst
-// pixel 0.15%; furnace_0.8 mean -0.51%, worst pixel 1.09%.
+// pixel 0.15%; furnace_0.8 mean -0.51%, worst pixel 1.09%. Since issue 26 (unbiased half
+// rounding, dithered albedo, bounce cap 640): furnace_0.5 +0.098% / 0.098%, furnace_0.8 -0.156% /
+// 0.156%; furnace_0.95 and furnace_0.99 (the goal: within 2 %) in docs/gi.md.
 // The surface cache alone is within 0.31% at rho = 0.8 (docs/surface_cache.md); the screen
 // probes' SH, their half-float atlas and the screen filter add the rest.
 INSTANTIATE_TEST_SUITE_P(Scenes, FrameFurnaceGpu,
                          ::testing::Combine(::testing::ValuesIn(app::compiledApis()),
                                             ::testing::Values(FurnaceCase{"furnace_0.5", 0.5, 0.005, 0.01},
-                                                              FurnaceCase{"furnace_0.8", 0.8, 0.015, 0.03})),
+                                                              FurnaceCase{"furnace_0.8", 0.8, 0.015, 0.03},
+                                                              FurnaceCase{"furnace_0.95", 0.95, 0.02, 0.03},
+                                                              FurnaceCase{"furnace_0.99", 0.99, 0.02, 0.03})),
                          furnaceName);
 
 // ---- against the path tracer ----

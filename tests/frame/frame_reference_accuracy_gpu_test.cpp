@@ -1,90 +1,75 @@
-// The screen-probe gather's accuracy goal (docs/gi_tests.md): after convergence, the final image
-// with GI has at most a tenth of the relMSE that the direct-only image (what a user gets with no
-// GI) has against the same path-traced reference. The references are stored
-// (tests/frame/data/<scene>_128x128.exr): 65,536 samples per pixel at pixel centres, made on the
-// lent GPU, where they take seconds (lavapipe would take hours); their own noise is below 3e-4
-// relMSE. Medium preset, the one `lumina render` uses, at 128 x 128 (16 x 16 probes).
+// Lumen's accuracy against stored path-traced references (docs/gi_tests.md, docs/gi.md), after
+// convergence (surface cache converged, then 48 frames, as `lumina render` runs), at 128 x 128,
+// medium preset: per scene, the final image's relMSE at most a given fraction of the direct-only
+// image's (what a user gets with no GI) against the same reference, and its mean radiance within a
+// given fraction of the reference's. frame_presets_accuracy_gpu_test.cpp compares the presets.
+// The references are stored (tests/frame/data/<scene>_128x128.exr), at pixel centres: 65,536
+// samples per pixel made on the lent GPU for the Cornell boxes and the open-top box (their own
+// noise below 3e-4 relMSE), 4,096 made on lavapipe for two_rooms and sunlit_rooms.
 //
 // Regenerate after a change to the scenes or the path tracer:
 //   lumina reference SCENE --size 128x128 --spp 65536 --pixel-centres --out
 //   tests/frame/data/SCENE_128x128.exr
-#include "gi/image/exr.h"
-#include "gi/measure/metrics.h"
-#include "gi/scene/scene_loader.h"
-#include "tests/frame/frame_harness.h"
+#include "tests/frame/stored_reference.h"
 #include "tests/rhi/gpu_test_fixture.h"
 
-#include <cstdio>
-#include <filesystem>
+#include <ostream>
 #include <string>
 
 namespace lumina::test {
 namespace {
 
-constexpr uint32_t kSize = 128;
-constexpr uint32_t kSettleFrames = 48; // as `lumina render` without --frames
-constexpr double kGoal = 0.1;          // lumen's relMSE / direct-only's, at most
+struct SceneGoal {
+    const char* scene;
+    double relMseFraction; // lumen's relMSE / direct-only's, at most
+    double meanTolerance;  // |lumen's mean / the reference's - 1|, at most
+};
 
-std::filesystem::path referencePath(const std::string& scene) {
-    return std::filesystem::path(LUMINA_FRAME_TEST_DATA_DIR) / (scene + "_128x128.exr");
-}
-
-// a - b, channel by channel (R, G, B).
-image::Image difference(const image::Image& a, const image::Image& b) {
-    image::Image out = image::Image::rgb(a.width(), a.height());
-    for (const char* c : {"R", "G", "B"}) {
-        const auto x = a.channel(c);
-        const auto y = b.channel(c);
-        auto o = out.channel(c);
-        for (size_t i = 0; i < o.size(); ++i) {
-            o[i] = x[i] - y[i];
-        }
-    }
-    return out;
+void PrintTo(const SceneGoal& goal, std::ostream* out) {
+    *out << goal.scene;
 }
 
 class FrameVsStoredReferenceGpu : public GpuTestFixture,
-                                  public ::testing::WithParamInterface<std::tuple<rhi::Api, const char*>> {
+                                  public ::testing::WithParamInterface<std::tuple<rhi::Api, SceneGoal>> {
 protected:
     void SetUp() override { openDevice(std::get<0>(GetParam())); }
 };
 
-TEST_P(FrameVsStoredReferenceGpu, LumenHasATenthOfTheDirectOnlyError) {
+TEST_P(FrameVsStoredReferenceGpu, LumenMeetsItsSceneGoal) {
     LUMINA_REQUIRE_KERNELS();
-    const std::string scene = std::get<1>(GetParam());
-    const image::Image reference = rgbOnly(image::readExr(referencePath(scene)));
-    ASSERT_EQ(reference.width(), kSize);
-    ASSERT_EQ(reference.height(), kSize);
-    FrameHarness h(device(), shaders(), scene::loadScene(scene),
-                   {.width = kSize, .height = kSize, .preset = "medium"});
-    const uint32_t frames = h.renderUntilConverged(kSettleFrames);
-    ASSERT_TRUE(h.converged()) << scene << ": surface cache not converged after " << frames << " frames";
-
-    const image::Image lumen = h.hdr();
-    const image::Image direct = h.direct();
-    ASSERT_EQ(measure::countNonFinite(lumen).total(), 0u);
-    const double lumenRelMse = measure::relMse(reference, lumen);
-    const double directRelMse = measure::relMse(reference, direct);
-    // The indirect term: what lumen adds to the direct light, against what the path tracer has
-    // beyond the same direct light (in the emissive box the path tracer's own direct/indirect
-    // split puts the light's first bounce on the other side).
-    const double indirectRelMse = measure::relMse(difference(reference, direct), difference(lumen, direct));
-    std::printf("%s %ux%u medium: %u frames; relMSE lumen %.5f, direct only %.5f (lumen / direct %.3f), "
-                "indirect term %.5f\n",
-                scene.c_str(), kSize, kSize, frames, lumenRelMse, directRelMse, lumenRelMse / directRelMse,
-                indirectRelMse);
-    EXPECT_LE(lumenRelMse, kGoal * directRelMse);
+    const SceneGoal& goal = std::get<1>(GetParam());
+    const StoredReferenceFigures f = measureAgainstStoredReference(device(), shaders(), goal.scene, "medium");
+    ASSERT_TRUE(f.referenceSized) << goal.scene << ": stored reference is not 128x128";
+    EXPECT_TRUE(f.converged) << goal.scene << ": surface cache not converged after " << f.frames << " frames";
+    EXPECT_EQ(f.nonFinitePixels, 0u);
+    EXPECT_LE(f.lumenRelMse, goal.relMseFraction * f.directRelMse);
+    EXPECT_NEAR(f.meanRatio, 1.0, goal.meanTolerance);
 }
 
-std::string caseName(const ::testing::TestParamInfo<std::tuple<rhi::Api, const char*>>& info) {
-    return std::string(rhi::apiName(std::get<0>(info.param))) + "_" + std::get<1>(info.param);
+std::string goalName(const ::testing::TestParamInfo<std::tuple<rhi::Api, SceneGoal>>& info) {
+    return std::string(rhi::apiName(std::get<0>(info.param))) + "_" + std::get<1>(info.param).scene;
 }
+
+// The goal (issue 26): relMSE at most a twentieth of direct-only's in the Cornell boxes and the
+// two-room scenes, a tenth in the open-top box, the mean within 3 %. Where a scene does not meet
+// it yet, the bound is the figure measured on lavapipe (128x128, medium, commit of issue 26) with
+// a margin, and docs/gi.md says what is missing. Measured: relMSE / direct-only's, mean ratio.
+const SceneGoal kSceneGoals[] = {
+    // 0.054, 1.018: the goal's relMSE not met (0.047 before the Cornell blocks became solids).
+    {.scene = "cornell_box", .relMseFraction = 0.065, .meanTolerance = 0.03},
+    {.scene = "cornell_box_point", .relMseFraction = 0.05, .meanTolerance = 0.03}, // 0.034, 1.010
+    {.scene = "open_top_box", .relMseFraction = 0.1, .meanTolerance = 0.03},       // 0.069, 1.014
+    // 0.147, 1.116: the east room too bright (docs/gi.md, energy).
+    {.scene = "two_rooms", .relMseFraction = 0.2, .meanTolerance = 0.15},
+    // 1.283, 1.458: worse than direct-only; the shaded room far too bright, and the 1,024-spp
+    // reference's own noise is large here (the sun patch is found by few paths).
+    {.scene = "sunlit_rooms", .relMseFraction = 1.5, .meanTolerance = 0.6},
+};
 
 INSTANTIATE_TEST_SUITE_P(Scenes, FrameVsStoredReferenceGpu,
                          ::testing::Combine(::testing::ValuesIn(app::compiledApis()),
-                                            ::testing::Values("cornell_box", "cornell_box_point",
-                                                              "open_top_box")),
-                         caseName);
+                                            ::testing::ValuesIn(kSceneGoals)),
+                         goalName);
 
 } // namespace
 } // namespace lumina::test

@@ -162,6 +162,31 @@ TEST(MeshTopology, BoundaryEdgesMarkOpenMeshes) {
     EXPECT_FALSE(open(split));
 }
 
+// Boundary edges make a mesh open (a shell in the global SDF, a thicker near-field threshold)
+// only where it is thin: a quad is open, a box missing its bottom face (a block standing on a
+// floor, a wall whose hidden faces were left out) is a solid, its SDF negative behind every face.
+TEST_F(SceneSdfDataTest, OnlyThinMeshesWithBoundaryEdgesAreOpen) {
+    scene::Scene scene;
+    scene.meshes.push_back(test::toSceneMesh(lumina::test::makeGrid({-1, -1}, {1, 1}, 0.0f, 4), "quad"));
+    scene.meshes.push_back(
+        test::toSceneMesh(lumina::test::makeBox({-1.0f, -0.5f, -0.7f}, {1.0f, 0.5f, 0.7f}, 2, {2}), "block"));
+    scene.meshes.push_back(test::toSceneMesh(
+        lumina::test::makeBox({-1.0f, -0.5f, -0.7f}, {1.0f, 0.5f, 0.7f}, 2), "closed block"));
+    for (uint32_t i = 0; i < scene.meshes.size(); ++i) {
+        scene.instances.push_back({.mesh = i, .transform = glm::mat4(1.0f), .name = scene.meshes[i].name});
+    }
+    const SceneSdfData data = buildSceneSdfData(scene, settings());
+    const auto open = [&](uint32_t mesh) {
+        return (data.atlas.volumes[data.meshVolume[mesh]].dims.w & LUMINA_SDF_VOLUME_OPEN) != 0;
+    };
+    EXPECT_TRUE(hasBoundaryEdges(scene.meshes[1].positions, scene.meshes[1].indices));
+    EXPECT_TRUE(open(0));
+    EXPECT_FALSE(open(1));
+    EXPECT_FALSE(open(2));
+    EXPECT_FALSE(everyFaceBacksOntoInside(data.atlas, data.meshVolume[0], scene.meshes[0].positions,
+                                          scene.meshes[0].indices));
+}
+
 TEST(GlobalGrid, CubicVoxelsCentredOnTheBox) {
     const GlobalSdfSettings grid = globalGridFor({{0, 0, 0}, {60, 10, 30}}, 64, 2, 4.0f);
     EXPECT_FLOAT_EQ(grid.voxelSize, 1.0f);

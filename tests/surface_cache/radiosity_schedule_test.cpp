@@ -22,6 +22,8 @@ TEST(RadiositySchedule, BouncesToConvergeFollowTheGeometricSeries) {
     EXPECT_EQ(bouncesToConverge(1.0f, s), 256u);
     EXPECT_EQ(bouncesToConverge(0.0f, s), 1u);
     EXPECT_EQ(bouncesToConverge(0.001f, s), 1u);
+    // The default cap lets rho = 0.99 converge (docs/gi.md, energy).
+    EXPECT_EQ(bouncesToConverge(0.99f, RadiosityScheduleSettings{}), 619u);
 }
 
 TEST(RadiositySchedule, RefusesBadInput) {

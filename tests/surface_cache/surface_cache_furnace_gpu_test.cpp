@@ -2,8 +2,7 @@
 // closed room and a block, every surface of albedo rho emitting Le = 1): the exact outgoing
 // radiance is Le / (1 - rho) everywhere. Combine, voxel lighting and radiosity run until the
 // schedule declares convergence; the final layer must then hold the analytic value within 2 %
-// (rho <= 0.95), and for rho = 0.99, where the bounce cap stops it early, stay finite and never
-// exceed it.
+// (every texel for rho <= 0.95; at rho = 0.99 the mean, every texel within 3 %).
 #include "gi/scene/scene_loader.h"
 #include "tests/rhi/gpu_test_fixture.h"
 #include "tests/surface_cache/surface_cache_harness.h"
@@ -120,14 +119,16 @@ TEST_P(SurfaceCacheFurnaceGpu, Rho095ConvergesToTheAnalyticRadiance) {
     expectConverged(runFurnace(device(), shaders(), "furnace_0.95", 0.95f));
 }
 
-TEST_P(SurfaceCacheFurnaceGpu, Rho099StaysFiniteAndBelowTheAnalyticRadiance) {
+// rho = 0.99 needs 619 bounces (the cap, 640, allows them), an albedo dithered between its two
+// neighbouring halves (0.989746 alone gives 97.5) and unbiased half rounding in the loop (nearest
+// rounding stalled near 94.5): docs/gi.md, energy.
+TEST_P(SurfaceCacheFurnaceGpu, Rho099ConvergesToTheAnalyticRadiance) {
     LUMINA_REQUIRE_KERNELS();
     const FurnaceResult r = runFurnace(device(), shaders(), "furnace_0.99", 0.99f);
     EXPECT_TRUE(r.finite);
     EXPECT_GT(r.texels, 6u * 60u * 60u);
-    // fp16 rounds 100 to within 0.03: the bound allows that and nothing else.
-    EXPECT_LE(r.maxValue, 100.0f * (1.0f + 1.0f / 1024.0f));
-    EXPECT_GT(r.maxValue, 10.0f); // and it did gather many bounces
+    EXPECT_NEAR(r.meanRelError, 0.0f, 0.02f);
+    EXPECT_LT(r.maxAbsRelError, 0.03f);
 }
 
 LUMINA_INSTANTIATE_GPU_TEST(SurfaceCacheFurnaceGpu);

@@ -4,6 +4,7 @@
 // scene file (scenes/door/door.json) swings it open about that hinge and back, so all the light
 // the camera sees arrives through the doorway, indirectly. Metres, y up.
 #include "gi/scene/generators/generators.h"
+#include "gi/scene/generators/two_room_layout.h"
 #include "gi/scene/mesh_builder.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -12,10 +13,6 @@ namespace lumina::scene {
 
 namespace {
 
-// Each room 4 m x 3 m high x 4 m; the wall between them is 0.2 m thick, centred on x = 0.
-constexpr float kRoomLength = 4.0f, kHeight = 3.0f, kHalfDepth = 2.0f, kHalfWall = 0.1f;
-// The doorway: 1 m wide (z in [-0.5, 0.5]), 2.1 m high.
-constexpr float kDoorwayHalfWidth = 0.5f, kDoorwayHeight = 2.1f;
 // The door: 4 cm thick, 1 cm off the east face of the wall, overlapping the doorway by 6 cm at
 // the sides and 5 cm at the top so that no straight ray slips past it when closed.
 constexpr float kDoorGap = 0.01f, kDoorThickness = 0.04f, kDoorOverlap = 0.06f, kDoorHeight = 2.15f;
@@ -23,39 +20,10 @@ constexpr float kDoorGap = 0.01f, kDoorThickness = 0.04f, kDoorOverlap = 0.06f, 
 // the floor below it.
 constexpr float kLampCandela = 25.0f;
 
-enum DoorMaterial : uint32_t { kPlaster, kFloor, kOchre, kWood };
+using namespace two_room;
 
-constexpr uint32_t kSkipBottom = 1u << 2, kSkipTop = 1u << 3, kSkipSouth = 1u << 4, kSkipNorth = 1u << 5;
-
-Mesh roomsMesh() {
-    MeshBuilder rooms("rooms");
-    rooms.material(kPlaster);
-    const glm::vec3 min(-kRoomLength - kHalfWall, 0.0f, -kHalfDepth),
-        max(kRoomLength + kHalfWall, kHeight, kHalfDepth);
-    // One shell around both rooms, facing in; its floor and the lit room's end wall get their
-    // own materials.
-    rooms.box(min, max, /*inward=*/true, /*skipFaces=*/(1u << 0) | kSkipBottom);
-    rooms.material(kFloor);
-    rooms.quad({min.x, 0.0f, min.z}, {min.x, 0.0f, max.z}, {max.x, 0.0f, max.z}, {max.x, 0.0f, min.z});
-    rooms.material(kOchre); // the lit room's far wall: the colour that bleeds through the door
-    rooms.quadFacingAwayFrom({min.x, 0.0f, min.z}, {min.x, 0.0f, max.z}, {min.x, kHeight, max.z},
-                             {min.x, kHeight, min.z}, {min.x - 1.0f, 0.5f * kHeight, 0.0f});
-    return rooms.finish();
-}
-
-// The wall between the rooms: two full-height pieces beside the doorway and a lintel above it,
-// without the faces that touch the shell or each other.
-Mesh dividingWallMesh() {
-    MeshBuilder wall("dividing wall");
-    wall.material(kPlaster);
-    wall.box({-kHalfWall, 0.0f, -kHalfDepth}, {kHalfWall, kHeight, -kDoorwayHalfWidth}, false,
-             kSkipBottom | kSkipTop | kSkipSouth);
-    wall.box({-kHalfWall, 0.0f, kDoorwayHalfWidth}, {kHalfWall, kHeight, kHalfDepth}, false,
-             kSkipBottom | kSkipTop | kSkipNorth);
-    wall.box({-kHalfWall, kDoorwayHeight, -kDoorwayHalfWidth}, {kHalfWall, kHeight, kDoorwayHalfWidth}, false,
-             kSkipTop | kSkipSouth | kSkipNorth);
-    return wall.finish();
-}
+constexpr uint32_t kWood = kFirstOwnMaterial;
+constexpr uint32_t kSkipBottom = 1u << 2;
 
 Mesh doorMesh() {
     MeshBuilder door("door");
@@ -81,7 +49,7 @@ Scene makeDoor() {
         {.name = "ochre", .baseColor = {0.8f, 0.5f, 0.15f, 1.0f}},
         {.name = "wood", .baseColor = {0.5f, 0.32f, 0.18f, 1.0f}},
     };
-    scene.meshes = {roomsMesh(), dividingWallMesh(), doorMesh()};
+    scene.meshes = {shellMesh(), dividingWallMesh(), doorMesh()};
     for (uint32_t i = 0; i < scene.meshes.size(); ++i) {
         scene.instances.push_back({.mesh = i, .transform = glm::mat4(1.0f), .name = scene.meshes[i].name});
     }

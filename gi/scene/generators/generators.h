@@ -29,6 +29,12 @@ Scene makeDoor();
 // A point on the door's hinge axis (vertical, through this point).
 glm::vec3 doorHinge();
 
+// Two rooms joined by a doorway, only the west one lit, the camera in the east one (metres):
+// by an emissive panel in the west room's ceiling (two_rooms), or by the sun and sky through an
+// opening there (sunlit_rooms).
+Scene makeTwoRooms();
+Scene makeSunlitRooms();
+
 // A grid of `buildings` instanced buildings on a ground plane (metres).
 inline constexpr uint32_t kCityDefaultBuildings = 1024;
 inline constexpr uint32_t kCityMaxBuildings = 1u << 20;

@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# Runs on the lent GPU machine (docs/gpu.md): README's accuracy table. For every built-in scene,
+# a path-traced reference (LUMINA_REFERENCE_SPP samples at pixel centres, default 65536), the
+# direct-only image and lumen at every preset after convergence (what `lumina render` does without
+# --frames), all at LUMINA_SIZE (default 256x256); then `lumina compare` of each against the
+# reference. Prints one markdown row per scene: relMSE of direct-only, and for each preset lumen's
+# relMSE, its ratio to direct-only's and lumen's mean radiance over the reference's. Writes
+# accuracy.txt (every compare in full) and accuracy.md (the table) under $OUT.
+set -uo pipefail
+out=${OUT:-$PWD/gpu-out}
+mkdir -p "$out"
+source scripts/gpu/prologue.sh
+export LUMINA_CACHE_DIR=/tmp/lumina-cache
+lumina=.devbin/lumina
+scenes=${LUMINA_SCENES:-"cornell_box cornell_box_point open_top_box two_rooms sunlit_rooms furnace_0.5 furnace_0.8 furnace_0.95 furnace_0.99"}
+presets=${LUMINA_PRESETS:-"low medium high"}
+size=${LUMINA_SIZE:-256x256}
+spp=${LUMINA_REFERENCE_SPP:-65536}
+
+# relMSE and mean radiance (R, G, B averaged) of TEST against REF, as "relmse mean_test mean_ref".
+figures() {
+  $lumina compare "$1" "$2" 2>&1 | awk '
+    /^  relMSE/ { r = $2 }
+    /^  mean / { gsub(/[(),]/, " "); ref = ($3 + $4 + $5) / 3; test = ($7 + $8 + $9) / 3 }
+    END { printf "%s %.6g %.6g\n", r, test, ref }'
+}
+
+{
+  echo "commit $(cat .devbin/commit 2>/dev/null || echo unknown), $size, reference $spp spp"
+  $lumina --list-devices 2>&1 | head -3
+} | tee "$out/accuracy.txt"
+header="| scene | direct relMSE"
+rule="|---|---:"
+for preset in $presets; do
+  header="$header | $preset relMSE | $preset / direct | $preset mean / reference"
+  rule="$rule|---:|---:|---:"
+done
+echo "$header |" >"$out/accuracy.md"
+echo "$rule|" >>"$out/accuracy.md"
+for scene in $scenes; do
+  ref=/tmp/ref_$scene.exr
+  timeout 600 $lumina reference "$scene" --size "$size" --spp "$spp" --pixel-centres --out "$ref" 2>&1 | tail -1 >>"$out/accuracy.txt"
+  timeout 120 $lumina render "$scene" --technique direct --size "$size" --frames 1 --exr "/tmp/direct_$scene.exr" \
+    --out "/tmp/direct_$scene.png" >/dev/null 2>&1
+  read -r directRel _ _ < <(figures "$ref" "/tmp/direct_$scene.exr")
+  row="| \`$scene\` | $directRel"
+  for preset in $presets; do
+    exr=/tmp/lumen_${scene}_$preset.exr
+    timeout 600 $lumina render "$scene" --preset "$preset" --size "$size" --exr "$exr" \
+      --out "/tmp/lumen_${scene}_$preset.png" 2>&1 | grep -E '^(frames|surface)' >>"$out/accuracy.txt"
+    read -r rel mean refMean < <(figures "$ref" "$exr")
+    echo "$scene $preset: relMSE $rel (direct $directRel), mean $mean (reference $refMean)" | tee -a "$out/accuracy.txt"
+    row="$row | $rel | $(awk -v a="$rel" -v b="$directRel" 'BEGIN { printf "%.3f", a / b }') | $(awk -v a="$mean" -v b="$refMean" 'BEGIN { printf "%.3f", a / b }')"
+  done
+  echo "$row |" >>"$out/accuracy.md"
+done
+cat "$out/accuracy.md"
+(cd /tmp && tar czf "$out/accuracy_images.tgz" lumen_*.png direct_*.png 2>/dev/null)
