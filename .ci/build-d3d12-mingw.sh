@@ -214,24 +214,38 @@ if [ ! -x "$linux_lumina" ]; then
         "set LUMINA_LINUX_BUILD_DIR)"
     exit 0
 fi
-echo "== wine: lumina.exe render cornell_box_point --technique direct on D3D12, against Vulkan"
 frames=$build/wine-render
 rm -rf "$frames" && mkdir -p "$frames"
-render_log=$frames/d3d12.log
-run_wine "$build/app/lumina.exe" render cornell_box_point --api d3d12 --technique direct --size 64x64 \
-    --out "Z:$frames/d3d12.png" --exr "Z:$frames/d3d12.exr" >"$render_log" 2>&1 ||
-    { cat "$render_log" >&2; fail "lumina.exe render failed under Wine; log: $render_log"; }
-if grep -qE 'Validation (Error|Warning)' "$render_log"; then
-    grep -E -B2 'Validation (Error|Warning)' "$render_log" >&2
-    fail "Vulkan validation reported problems beneath vkd3d while rendering; log: $render_log"
-fi
-(unset VK_INSTANCE_LAYERS VK_LAYER_ENABLES VK_ICD_FILENAMES VKD3D_CONFIG LUMINA_SHADER_DIR
- "$linux_lumina" render cornell_box_point --technique direct --size 64x64 --out "$frames/vulkan.png" \
-     --exr "$frames/vulkan.exr" >"$frames/vulkan.log" 2>&1) || fail "the Vulkan render failed; log: $frames/vulkan.log"
-relmse=$("$linux_lumina" compare "$frames/vulkan.exr" "$frames/d3d12.exr" | awk '/relMSE/ {print $2; exit}')
-echo "   relMSE of the D3D12 frame against the Vulkan one: $relmse (must be at most 1e-6)"
-awk -v r="$relmse" 'BEGIN { exit !(r != "" && r <= 1e-6) }' ||
-    fail "the D3D12 frame differs from the Vulkan frame (relMSE $relmse); images in $frames"
+
+# check_frame NAME BOUND VALIDATION SCENE RENDER-ARGS...: renders SCENE with RENDER-ARGS on D3D12
+# under Wine and with the Linux build on Vulkan, and fails when the two images differ by more than
+# relMSE BOUND. VALIDATION: "strict" fails on any Vulkan validation message beneath vkd3d, "vkd3d"
+# lets through vkd3d's own two (check_vkd3d_validation).
+check_frame() {
+    local name=$1 bound=$2 validation=$3 scene=$4
+    shift 4
+    local d3d12=$frames/${name}_d3d12 vulkan=$frames/${name}_vulkan relmse
+    echo "== wine: lumina.exe render $scene $* on D3D12, against Vulkan"
+    run_wine "$build/app/lumina.exe" render "$scene" --api d3d12 "$@" --out "Z:$d3d12.exr" >"$d3d12.log" 2>&1 ||
+        { cat "$d3d12.log" >&2; fail "lumina.exe render ($name) failed under Wine; log: $d3d12.log"; }
+    if [ "$validation" = strict ]; then
+        if grep -qE 'Validation (Error|Warning)' "$d3d12.log"; then
+            grep -E -B2 'Validation (Error|Warning)' "$d3d12.log" >&2
+            fail "Vulkan validation reported problems beneath vkd3d while rendering ($name); log: $d3d12.log"
+        fi
+    else
+        check_vkd3d_validation "$d3d12.log" "the $name frame"
+    fi
+    (unset VK_INSTANCE_LAYERS VK_LAYER_ENABLES VK_ICD_FILENAMES VKD3D_CONFIG LUMINA_SHADER_DIR
+     "$linux_lumina" render "$scene" "$@" --out "$vulkan.exr" >"$vulkan.log" 2>&1) ||
+        fail "the Vulkan render ($name) failed; log: $vulkan.log"
+    relmse=$("$linux_lumina" compare "$vulkan.exr" "$d3d12.exr" | awk '/relMSE/ {print $2; exit}')
+    echo "   relMSE of the D3D12 $name frame against the Vulkan one: $relmse (must be at most $bound)"
+    awk -v r="$relmse" -v b="$bound" 'BEGIN { exit !(r != "" && r <= b) }' ||
+        fail "the D3D12 $name frame differs from the Vulkan frame (relMSE $relmse); images in $frames"
+}
+
+check_frame direct 1e-6 strict cornell_box_point --technique direct --size 64x64
 
 # The lumen frame: SDF compose and traces, surface-cache capture, lighting, voxel lighting and
 # radiosity, and the 12 screen-probe passes, 4 frames. The APIs' float rounding differs by an ULP
@@ -239,33 +253,9 @@ awk -v r="$relmse" 'BEGIN { exit !(r != "" && r <= 1e-6) }' ||
 # importance sampling feeds each frame's radiance into the next frame's ray directions, so the
 # frames drift apart slowly: relMSE 7e-6 after 3 and 8e-6 after 4 frames, 3e-4 after 8
 # (docs/d3d12.md). A miscompiled kernel shows far above the bound (a black far field gave 0.0155).
-echo "== wine: lumina.exe render cornell_box --technique lumen on D3D12, against Vulkan"
-run_wine "$build/app/lumina.exe" render cornell_box --api d3d12 --technique lumen --preset low --size 32x32 \
-    --frames 4 --out "Z:$frames/lumen_d3d12.exr" >"$frames/lumen_d3d12.log" 2>&1 ||
-    { cat "$frames/lumen_d3d12.log" >&2; fail "lumina.exe render (lumen) failed under Wine; log: $frames/lumen_d3d12.log"; }
-check_vkd3d_validation "$frames/lumen_d3d12.log" "the lumen frame"
-(unset VK_INSTANCE_LAYERS VK_LAYER_ENABLES VK_ICD_FILENAMES VKD3D_CONFIG LUMINA_SHADER_DIR
- "$linux_lumina" render cornell_box --technique lumen --preset low --size 32x32 --frames 4 \
-     --out "$frames/lumen_vulkan.exr" >"$frames/lumen_vulkan.log" 2>&1) ||
-    fail "the Vulkan lumen render failed; log: $frames/lumen_vulkan.log"
-relmse=$("$linux_lumina" compare "$frames/lumen_vulkan.exr" "$frames/lumen_d3d12.exr" | awk '/relMSE/ {print $2; exit}')
-echo "   relMSE of the D3D12 lumen frame against the Vulkan one: $relmse (must be at most 1e-4)"
-awk -v r="$relmse" 'BEGIN { exit !(r != "" && r <= 1e-4) }' ||
-    fail "the D3D12 lumen frame differs from the Vulkan frame (relMSE $relmse); images in $frames"
+check_frame lumen 1e-4 vkd3d cornell_box --technique lumen --preset low --size 32x32 --frames 4
 
 # The DDGI frame: probe tracing through the SDFs into the surface cache, the irradiance and
 # distance blends, relocation, classification and sampling, 4 frames. No importance sampling
 # feeds back into the rays, so it must match Vulkan to rounding (it matched bit for bit).
-echo "== wine: lumina.exe render cornell_box --technique ddgi on D3D12, against Vulkan"
-run_wine "$build/app/lumina.exe" render cornell_box --api d3d12 --technique ddgi --preset low --size 32x32 \
-    --frames 4 --out "Z:$frames/ddgi_d3d12.exr" >"$frames/ddgi_d3d12.log" 2>&1 ||
-    { cat "$frames/ddgi_d3d12.log" >&2; fail "lumina.exe render (ddgi) failed under Wine; log: $frames/ddgi_d3d12.log"; }
-check_vkd3d_validation "$frames/ddgi_d3d12.log" "the DDGI frame"
-(unset VK_INSTANCE_LAYERS VK_LAYER_ENABLES VK_ICD_FILENAMES VKD3D_CONFIG LUMINA_SHADER_DIR
- "$linux_lumina" render cornell_box --technique ddgi --preset low --size 32x32 --frames 4 \
-     --out "$frames/ddgi_vulkan.exr" >"$frames/ddgi_vulkan.log" 2>&1) ||
-    fail "the Vulkan DDGI render failed; log: $frames/ddgi_vulkan.log"
-relmse=$("$linux_lumina" compare "$frames/ddgi_vulkan.exr" "$frames/ddgi_d3d12.exr" | awk '/relMSE/ {print $2; exit}')
-echo "   relMSE of the D3D12 DDGI frame against the Vulkan one: $relmse (must be at most 1e-6)"
-awk -v r="$relmse" 'BEGIN { exit !(r != "" && r <= 1e-6) }' ||
-    fail "the D3D12 DDGI frame differs from the Vulkan frame (relMSE $relmse); images in $frames"
+check_frame DDGI 1e-6 vkd3d cornell_box --technique ddgi --preset low --size 32x32 --frames 4
