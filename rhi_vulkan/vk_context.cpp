@@ -39,11 +39,12 @@ const char* memoryName(rhi::MemoryType memory) {
 } // namespace
 
 Context::Context(const rhi::DeviceDesc& desc)
-    : presentation_(desc.presentation), messages_(desc.messageCallback), instance_({.validation = desc.validation,
-                                                  .synchronizationValidation = desc.synchronizationValidation,
-                                                  .gpuBasedValidation = desc.gpuBasedValidation,
-                                                  .presentation = desc.presentation},
-                                                 &messages_) {
+    : presentation_(desc.presentation), messages_(desc.messageCallback),
+      instance_({.validation = desc.validation,
+                 .synchronizationValidation = desc.synchronizationValidation,
+                 .gpuBasedValidation = desc.gpuBasedValidation,
+                 .presentation = desc.presentation},
+                &messages_) {
     const auto physicalDevices = instance_.physicalDevices();
     if (desc.adapterIndex >= physicalDevices.size()) {
         throw rhi::Error("Vulkan adapter " + std::to_string(desc.adapterIndex) +
@@ -167,6 +168,9 @@ void Context::createDevice() {
     LUMINA_ENABLE_IF_SUPPORTED(supported11, enabled11, shaderDrawParameters);
     // Kernels write storage buffers and images from every stage, gather with offsets and use
     // the extended storage formats (rg16f, r16f, ...).
+    // geometryShader: the GBuffer's visibility pixel shader reads SV_PrimitiveID (SPIR-V's
+    // PrimitiveId in a fragment shader needs the Geometry capability).
+    LUMINA_ENABLE_IF_SUPPORTED(supported.features, enabled.features, geometryShader);
     LUMINA_ENABLE_IF_SUPPORTED(supported.features, enabled.features, depthClamp);
     LUMINA_ENABLE_IF_SUPPORTED(supported.features, enabled.features, fillModeNonSolid);
     LUMINA_ENABLE_IF_SUPPORTED(supported.features, enabled.features, samplerAnisotropy);
@@ -192,9 +196,10 @@ void Context::createDevice() {
         vkEnumerateDeviceExtensionProperties(physicalDevice_, nullptr, &count, nullptr);
         std::vector<VkExtensionProperties> available(count);
         vkEnumerateDeviceExtensionProperties(physicalDevice_, nullptr, &count, available.data());
-        features_.swapchain = std::any_of(available.begin(), available.end(), [](const VkExtensionProperties& e) {
-            return std::strcmp(e.extensionName, VK_KHR_SWAPCHAIN_EXTENSION_NAME) == 0;
-        });
+        features_.swapchain =
+            std::any_of(available.begin(), available.end(), [](const VkExtensionProperties& e) {
+                return std::strcmp(e.extensionName, VK_KHR_SWAPCHAIN_EXTENSION_NAME) == 0;
+            });
         if (!features_.swapchain) {
             throw rhi::Error("Vulkan adapter '" + adapter_.name + "' cannot present: no " +
                              VK_KHR_SWAPCHAIN_EXTENSION_NAME);

@@ -39,7 +39,7 @@ rhi::BufferHandle createConstantBuffer(rhi::IDevice& device, uint64_t size, cons
 DeferredRenderer::DeferredRenderer(rhi::IDevice& device, const scene::Scene& scene, const GpuScene& gpuScene,
                                    DeferredSettings settings)
     : device_(device), scene_(scene), settings_(resolved(std::move(settings), scene)), camera_(scene.camera),
-      bounds_(scene.worldBounds()), sky_(gpuScene.sky), gbufferPass_(scene, gpuScene),
+      bounds_(scene.worldBounds()), sky_(gpuScene.sky), gbufferPass_(device, scene, gpuScene),
       sunShadow_(device, gpuScene, settings_.sunShadowSize),
       pointShadow_(device, gpuScene, settings_.pointShadowSize), composite_(device) {
     const uint32_t w = settings_.width, h = settings_.height;

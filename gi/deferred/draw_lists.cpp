@@ -4,25 +4,36 @@
 
 namespace lumina::gi {
 
-std::vector<GBufferDrawGroup> gbufferDrawGroups(const scene::Scene& scene, std::span<const SceneDraw> draws) {
-    GBufferDrawGroup back{rhi::CullMode::Back, {}};
-    GBufferDrawGroup front{rhi::CullMode::Front, {}};
-    GBufferDrawGroup none{rhi::CullMode::None, {}};
+GBufferDraws gbufferDraws(const scene::Scene& scene, std::span<const SceneDraw> draws) {
+    std::vector<const SceneDraw*> back, front, none;
     for (const SceneDraw& draw : draws) {
         const uint32_t material = draw.constants.material;
         const bool doubleSided = material < scene.materials.size() && scene.materials[material].doubleSided;
         const bool mirrored =
             glm::determinant(glm::mat3(scene.instances.at(draw.constants.instance).transform)) < 0.0f;
-        GBufferDrawGroup& group = doubleSided ? none : mirrored ? front : back;
-        group.draws.push_back(RasterDraw::with(draw.args, draw.constants));
+        (doubleSided ? none : mirrored ? front : back).push_back(&draw);
     }
-    std::vector<GBufferDrawGroup> groups;
-    for (GBufferDrawGroup* group : {&back, &front, &none}) {
-        if (!group->draws.empty()) {
-            groups.push_back(std::move(*group));
+    GBufferDraws out;
+    uint64_t nextId = 1;
+    for (const auto& [cull, members] : {std::pair{rhi::CullMode::Back, &back},
+                                        {rhi::CullMode::Front, &front},
+                                        {rhi::CullMode::None, &none}}) {
+        if (members->empty()) {
+            continue;
         }
+        GBufferDrawGroup group{cull, {}};
+        for (const SceneDraw* draw : *members) {
+            const auto firstId = uint32_t(nextId);
+            group.draws.push_back(RasterDraw::with(
+                draw->args, gpu::GBufferVisibilityDrawConstants{draw->constants.instance, firstId, 0u, 0u}));
+            out.resolveTable.push_back(
+                {firstId, draw->args.firstVertexOrIndex, draw->constants.instance, draw->constants.material});
+            nextId += draw->args.vertexOrIndexCount / 3;
+        }
+        out.groups.push_back(std::move(group));
     }
-    return groups;
+    out.triangleCount = nextId - 1;
+    return out;
 }
 
 std::vector<ShadowDraw> shadowDraws(std::span<const SceneDraw> draws) {

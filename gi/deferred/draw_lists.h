@@ -6,6 +6,7 @@
 #include "gi/core/frame_context.h"
 #include "gi/gpu_scene/gpu_scene.h"
 #include "gi/scene/scene.h"
+#include "shaders/deferred/deferred_shared.h"
 
 #include <cstdint>
 #include <span>
@@ -15,11 +16,17 @@ namespace lumina::gi {
 
 struct GBufferDrawGroup {
     rhi::CullMode cull = rhi::CullMode::Back;
-    std::vector<RasterDraw> draws; // push constants: gpu::GpuDrawConstants
+    std::vector<RasterDraw> draws; // push constants: gpu::GBufferVisibilityDrawConstants
 };
 
-// Non-empty groups only, in the order cull back, cull front, cull none.
-std::vector<GBufferDrawGroup> gbufferDrawGroups(const scene::Scene& scene, std::span<const SceneDraw> draws);
+// The visibility raster's draws and the table its resolve finds them in. Triangle ids run over
+// the draws in drawing order from 1, so the table is sorted by firstId.
+struct GBufferDraws {
+    std::vector<GBufferDrawGroup> groups; // non-empty only, in the order cull back, front, none
+    std::vector<gpu::GBufferResolveDraw> resolveTable;
+    uint64_t triangleCount = 0;
+};
+GBufferDraws gbufferDraws(const scene::Scene& scene, std::span<const SceneDraw> draws);
 
 // One indexed range per instance where its submeshes are contiguous in the index buffer.
 struct ShadowDraw {

@@ -26,4 +26,19 @@ float3 sampleMaterialLayer(Texture2DArray<float4> textures, SamplerState materia
     return textures.Sample(materialSampler, float3(uv, float(layer))).rgb;
 }
 
+// The same with explicit texture-coordinate derivatives, for compute kernels (no implicit ones).
+float3 sampleMaterialLayerGrad(Texture2DArray<float4> textures, SamplerState materialSampler, uint layer, float2 uv,
+                               float2 uvDx, float2 uvDy) {
+    float3 value = float3(1.0, 1.0, 1.0);
+    if (layer != LUMINA_NO_TEXTURE_LAYER) {
+#ifdef LUMINA_DXBC
+        // vkd3d-shader 2.1 wants an array texture's derivatives as wide as its coordinate.
+        value = textures.SampleGrad(materialSampler, float3(uv, float(layer)), float3(uvDx, 0.0), float3(uvDy, 0.0)).rgb;
+#else
+        value = textures.SampleGrad(materialSampler, float3(uv, float(layer)), uvDx, uvDy).rgb;
+#endif
+    }
+    return value;
+}
+
 #endif // LUMINA_INSTANCE_TRANSFORM_HLSLI

@@ -61,6 +61,41 @@ struct DeferredLight {
 };
 LUMINA_STATIC_ASSERT_SIZE(DeferredLight, 80);
 
+// ---- GBuffer: visibility raster, then attribute resolve ----------------------------------
+// The raster writes one R32_UINT per pixel (docs/deferred.md, "GBuffer"): 0 where no surface,
+// else the id of the triangle drawn there plus LUMINA_GBUFFER_FRONT_FACE when the rasteriser
+// saw its front face. Ids are numbered per draw: draw d's triangle t is firstId(d) + t, with
+// firstId starting at 1, so an instanced mesh's triangles get one id per instance.
+#define LUMINA_GBUFFER_FRONT_FACE 0x80000000u
+#define LUMINA_GBUFFER_ID_MASK 0x7FFFFFFFu
+
+// Push constants of one visibility draw.
+struct GBufferVisibilityDrawConstants {
+    uint instance;
+    uint firstId; // the id of the draw's first triangle
+    uint pad0;
+    uint pad1;
+};
+LUMINA_STATIC_ASSERT_SIZE(GBufferVisibilityDrawConstants, 16);
+
+// One draw as the resolve finds it from a triangle id; the table is sorted by firstId.
+struct GBufferResolveDraw {
+    uint firstId;
+    uint firstIndex; // the draw's first index in the scene index buffer
+    uint instance;
+    uint material;
+};
+LUMINA_STATIC_ASSERT_SIZE(GBufferResolveDraw, 16);
+
+// Resolve push constants.
+struct GBufferResolveConstants {
+    uint width;
+    uint height;
+    uint drawCount;
+    uint pad0;
+};
+LUMINA_STATIC_ASSERT_SIZE(GBufferResolveConstants, 16);
+
 // Push constants of one shadow draw.
 struct ShadowDrawConstants {
     uint instance;

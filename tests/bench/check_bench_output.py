@@ -84,8 +84,8 @@ def main():
             fail(f"{key}: non-finite pixels")
         if not 0 < int(r["frames_to_converge"]) <= int(r["frames"]):
             fail(f"{key}: frames_to_converge {r['frames_to_converge']}")
-        if r["technique"] in ("direct", "lumen", "ddgi") and not r["passes_ms"].count("gbuffer="):
-            fail(f"{key}: no gbuffer pass timing in '{r['passes_ms']}'")
+        if r["technique"] in ("direct", "lumen", "ddgi") and not r["passes_ms"].count("gbuffer resolve="):
+            fail(f"{key}: no gbuffer resolve pass timing in '{r['passes_ms']}'")
         if r["technique"] == "lumen":
             for prefix in ("sdf: ", "surface cache: ", "screen probes: "):
                 if prefix not in r["passes_ms"]:

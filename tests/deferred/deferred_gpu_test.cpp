@@ -106,7 +106,7 @@ TEST_P(DeferredGpuTest, PointShadowsRenderOnlyWhenTheirLightOrTheGeometryChanges
     auto frame = harness.render();
     EXPECT_TRUE(frame.ran("point shadows"));
     EXPECT_EQ(frame.skipReason("sun shadow"), "no directional light");
-    for (const char* pass : {"gbuffer", "direct light", "composite"}) {
+    for (const char* pass : {"gbuffer visibility", "gbuffer resolve", "direct light", "composite"}) {
         EXPECT_TRUE(frame.ran(pass)) << pass;
     }
     for (int i = 0; i < 2; ++i) {

@@ -169,7 +169,8 @@ TEST(DeferredDrawLists, CullModeFollowsDoubleSidedAndMirroring) {
     add(1, 0, 0, 6);  // mirrored single-sided: cull front
     add(1, 1, 6, 6);  // mirrored double-sided: no culling
     add(2, 0, 12, 3); // not contiguous with instance 1's range
-    const auto groups = gbufferDrawGroups(scene, draws);
+    const GBufferDraws gbuffer = gbufferDraws(scene, draws);
+    const auto& groups = gbuffer.groups;
     ASSERT_EQ(groups.size(), 3u);
     EXPECT_EQ(groups[0].cull, rhi::CullMode::Back);
     EXPECT_EQ(groups[0].draws.size(), 2u);
@@ -177,9 +178,18 @@ TEST(DeferredDrawLists, CullModeFollowsDoubleSidedAndMirroring) {
     EXPECT_EQ(groups[1].draws.size(), 1u);
     EXPECT_EQ(groups[2].cull, rhi::CullMode::None);
     EXPECT_EQ(groups[2].draws.size(), 2u);
-    gpu::GpuDrawConstants pushed{};
+    gpu::GBufferVisibilityDrawConstants pushed{};
     std::memcpy(&pushed, groups[1].draws[0].constants.data(), sizeof(pushed));
     EXPECT_EQ(pushed.instance, 1u);
+    // Ids in drawing order from 1: back (2 + 1 triangles), then front (2), then none (2 + 2).
+    EXPECT_EQ(pushed.firstId, 4u);
+    EXPECT_EQ(gbuffer.triangleCount, 9u);
+    ASSERT_EQ(gbuffer.resolveTable.size(), 5u);
+    for (size_t i = 1; i < gbuffer.resolveTable.size(); ++i) {
+        EXPECT_LT(gbuffer.resolveTable[i - 1].firstId, gbuffer.resolveTable[i].firstId);
+    }
+    EXPECT_EQ(gbuffer.resolveTable[2].instance, 1u);
+    EXPECT_EQ(gbuffer.resolveTable[2].firstIndex, 0u);
 
     // Shadows: one range per instance where its submeshes are contiguous.
     const auto shadows = shadowDraws(draws);
