@@ -16,6 +16,9 @@ sizes=${LUMINA_SIZES:-"1280x720 1920x1080 3840x2160"}
 configs=${LUMINA_CONFIGS:-"direct:medium lumen:low lumen:medium lumen:high ddgi:low ddgi:medium ddgi:high"}
 frames=${LUMINA_FRAMES:-300}
 warmup=${LUMINA_WARMUP:-100}
+# Runs not started by then are left out and named in perf.log, so that one device call still
+# brings back what it measured.
+deadline=$(( $(date +%s) + ${LUMINA_PERF_BUDGET_S:-540} ))
 {
   echo "commit $(cat .devbin/commit 2>/dev/null || echo unknown)"
   nvidia-smi --query-gpu=name,driver_version,clocks.max.sm,clocks.max.mem --format=csv 2>/dev/null
@@ -27,6 +30,10 @@ warmup=${LUMINA_WARMUP:-100}
         preset=${config##*:}
         name="${scene}_${technique}_${preset}_${size}"
         echo "== $scene $technique $preset $size"
+        if [ "$(date +%s)" -ge "$deadline" ]; then
+          echo "skipped: past the time budget"
+          continue
+        fi
         timeout 240 $lumina render "$scene" --technique "$technique" --preset "$preset" --size "$size" \
           --frames "$frames" --warmup "$warmup" --timings-json "$out/perf/$name.json" --out "/tmp/$name.png" \
           2>&1 | grep -E "^(GPU memory|surface cache|error)"
