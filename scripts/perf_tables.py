@@ -7,6 +7,31 @@ import pathlib
 import sys
 
 
+# The deferred renderer's passes; everything else in a frame belongs to the GI technique.
+DEFERRED = {"gbuffer visibility", "gbuffer resolve", "direct light", "composite", "sun shadow", "point shadows"}
+
+
+def print_summary(runs, sizes) -> None:
+    """One row per scene and configuration: the GBuffer, the GI and the whole frame at each size
+    (GI: the frame less the deferred renderer's passes; medians of sums are not sums of
+    medians, so the columns need not add up exactly)."""
+    print("| scene | technique | preset | " + " | ".join(f"{s} GBuffer / GI / frame" for s in sizes) + " |")
+    print("|---|---|---|" + "---:|" * len(sizes))
+    for (scene, technique, preset), by_size in sorted(runs.items()):
+        cells = []
+        for size in sizes:
+            passes = {p["name"]: p["medianMs"] for p in by_size.get(size, {}).get("passes", [])}
+            if "frame" not in passes:
+                cells.append("")
+                continue
+            gbuffer = passes.get("gbuffer visibility", 0.0) + passes.get("gbuffer resolve", 0.0)
+            deferred = sum(v for k, v in passes.items() if k in DEFERRED)
+            gi = max(0.0, passes["frame"] - deferred) if technique != "direct" else 0.0
+            cells.append(f"{gbuffer:.2f} / {gi:.2f} / {passes['frame']:.2f}")
+        print(f"| `{scene}` | {technique} | {preset} | " + " | ".join(cells) + " |")
+    print()
+
+
 def main() -> int:
     if len(sys.argv) != 2:
         print(__doc__, file=sys.stderr)
@@ -27,6 +52,7 @@ def main() -> int:
           f"commit {context.get('commit')}; median GPU ms per pass over the frames after warm-up "
           f"(runs: how many of them the pass ran in).\n")
     sizes = sorted({s for r in runs.values() for s in r}, key=lambda s: int(s.split("x")[0]))
+    print_summary(runs, sizes)
     for (scene, technique, preset), by_size in sorted(runs.items()):
         print(f"### `{scene}`, {technique}, {preset}\n")
         print("| pass | " + " | ".join(sizes) + " |")
