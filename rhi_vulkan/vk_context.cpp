@@ -24,26 +24,15 @@ uint32_t findMemoryType(const VkPhysicalDeviceMemoryProperties& properties, uint
     return kNoMemoryType;
 }
 
-const char* memoryName(rhi::MemoryType memory) {
-    switch (memory) {
-    case rhi::MemoryType::GpuOnly:
-        return "GpuOnly";
-    case rhi::MemoryType::Upload:
-        return "Upload";
-    case rhi::MemoryType::Readback:
-        return "Readback";
-    }
-    return "?";
-}
-
 } // namespace
 
 Context::Context(const rhi::DeviceDesc& desc)
-    : presentation_(desc.presentation), messages_(desc.messageCallback), instance_({.validation = desc.validation,
-                                                  .synchronizationValidation = desc.synchronizationValidation,
-                                                  .gpuBasedValidation = desc.gpuBasedValidation,
-                                                  .presentation = desc.presentation},
-                                                 &messages_) {
+    : presentation_(desc.presentation), messages_(desc.messageCallback),
+      instance_({.validation = desc.validation,
+                 .synchronizationValidation = desc.synchronizationValidation,
+                 .gpuBasedValidation = desc.gpuBasedValidation,
+                 .presentation = desc.presentation},
+                &messages_) {
     const auto physicalDevices = instance_.physicalDevices();
     if (desc.adapterIndex >= physicalDevices.size()) {
         throw rhi::Error("Vulkan adapter " + std::to_string(desc.adapterIndex) +
@@ -192,9 +181,10 @@ void Context::createDevice() {
         vkEnumerateDeviceExtensionProperties(physicalDevice_, nullptr, &count, nullptr);
         std::vector<VkExtensionProperties> available(count);
         vkEnumerateDeviceExtensionProperties(physicalDevice_, nullptr, &count, available.data());
-        features_.swapchain = std::any_of(available.begin(), available.end(), [](const VkExtensionProperties& e) {
-            return std::strcmp(e.extensionName, VK_KHR_SWAPCHAIN_EXTENSION_NAME) == 0;
-        });
+        features_.swapchain =
+            std::any_of(available.begin(), available.end(), [](const VkExtensionProperties& e) {
+                return std::strcmp(e.extensionName, VK_KHR_SWAPCHAIN_EXTENSION_NAME) == 0;
+            });
         if (!features_.swapchain) {
             throw rhi::Error("Vulkan adapter '" + adapter_.name + "' cannot present: no " +
                              VK_KHR_SWAPCHAIN_EXTENSION_NAME);
@@ -254,8 +244,8 @@ VkDeviceMemory Context::allocateMemory(const VkMemoryRequirements& requirements,
     if (type == kNoMemoryType) {
         type = findMemoryType(memoryProperties_, requirements.memoryTypeBits, minimum);
     }
-    const std::string context = std::to_string(requirements.size) + " bytes of " + memoryName(memory) +
-                                " memory for '" + std::string(debugName) + "'";
+    const std::string context = std::to_string(requirements.size) + " bytes of " +
+                                rhi::memoryTypeName(memory) + " memory for '" + std::string(debugName) + "'";
     if (type == kNoMemoryType) {
         throw rhi::Error("no Vulkan memory type fits " + context);
     }
