@@ -80,6 +80,14 @@ void validateTextureDesc(const TextureDesc& desc) {
     }
 }
 
+void validateSamplerDesc(const SamplerDesc& desc) {
+    if (!(desc.maxAnisotropy >= 1.0f && desc.maxAnisotropy <= kMaxSamplerAnisotropy)) {
+        throw Error("createSampler('" + desc.debugName + "'): maxAnisotropy " +
+                    std::to_string(desc.maxAnisotropy) + " is outside [1, " +
+                    std::to_string(int(kMaxSamplerAnisotropy)) + "]");
+    }
+}
+
 uint64_t validateBufferBinding(BindingType type, const IBuffer& buffer, BufferRange range) {
     const BufferDesc& desc = buffer.desc();
     const std::string what = "buffer '" + desc.debugName + "' bound as " + bindingTypeName(type);

@@ -12,6 +12,8 @@
 //               with 6 layers per cube (exactly 6 for TextureCube); depth formats neither
 //               Storage nor RenderTarget, DepthStencil only on a 2D depth format; no Storage
 //               on sRGB formats (D3D12 has no sRGB UAVs). Device limits are the backend's.
+//   samplers    maxAnisotropy in [1, kMaxSamplerAnisotropy] (16, D3D12's maximum; Vulkan clamped
+//               to its device limit before).
 //   buffer      a buffer bound through a binding set: not Readback memory (D3D12 readback
 //   bindings    heaps take no views); a non-empty range inside the buffer; u registers need
 //               Storage usage; a constant buffer needs Constant usage and an offset multiple of
@@ -46,6 +48,9 @@ constexpr uint64_t kRawBufferOffsetAlignment = 16;
 
 void validateBufferDesc(const BufferDesc& desc);
 void validateTextureDesc(const TextureDesc& desc);
+
+constexpr float kMaxSamplerAnisotropy = 16.0f; // D3D12_MAX_MAXANISOTROPY
+void validateSamplerDesc(const SamplerDesc& desc);
 
 // A buffer bound as `type` over `range`; returns the bytes bound (range.size 0: to the end).
 uint64_t validateBufferBinding(BindingType type, const IBuffer& buffer, BufferRange range);

@@ -96,6 +96,14 @@ TEST_P(ValidationTest, TextureDescriptionsFollowOneRuleOnEveryBackend) {
         {"deep chain", "4 mips", "at most 3"});
 }
 
+TEST_P(ValidationTest, SamplerAnisotropyFollowsOneRuleOnEveryBackend) {
+    // D3D12 refused these; Vulkan clamped them to its device limit.
+    expectRefused([&] { device().createSampler({.maxAnisotropy = 32.0f, .debugName = "too sharp"}); },
+                  {"too sharp", "maxAnisotropy 32", "[1, 16]"});
+    expectRefused([&] { device().createSampler({.maxAnisotropy = 0.5f, .debugName = "below one"}); },
+                  {"below one", "maxAnisotropy 0.5"});
+}
+
 TEST_P(ValidationTest, BufferTextureCopiesNeedD3D12AlignmentsOnEveryBackend) {
     rhi::TextureHandle texture = device().createTexture(smallTexture("copied texture"));
     rhi::BufferHandle buffer = device().createBuffer(
