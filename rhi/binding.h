@@ -3,23 +3,23 @@
 // `RWTexture2D<float4> output : register(u0)` is bound as BindingSetItem::storageTexture(0, tex).
 // On Vulkan register n of class b/t/u/s becomes binding n + 0/100/200/300 in the descriptor
 // set of its register space (docs/binding.md); on D3D12 the registers build the root signature.
+#include "rhi/resource.h"
+
 #include <cstdint>
 #include <memory>
 #include <vector>
 
-#include "rhi/resource.h"
-
 namespace lumina::rhi {
 
 enum class BindingType : uint8_t {
-    ConstantBuffer,  // b: cbuffer, ConstantBuffer<T>
-    TextureSRV,      // t: Texture2D, Texture3D, TextureCube, ...
-    BufferSRV,       // t: StructuredBuffer<T>
-    RawBufferSRV,    // t: ByteAddressBuffer
-    TextureUAV,      // u: RWTexture2D, RWTexture3D, RWTexture2DArray
-    BufferUAV,       // u: RWStructuredBuffer<T>
-    RawBufferUAV,    // u: RWByteAddressBuffer
-    Sampler,         // s: SamplerState, SamplerComparisonState
+    ConstantBuffer, // b: cbuffer, ConstantBuffer<T>
+    TextureSRV,     // t: Texture2D, Texture3D, TextureCube, ...
+    BufferSRV,      // t: StructuredBuffer<T>
+    RawBufferSRV,   // t: ByteAddressBuffer
+    TextureUAV,     // u: RWTexture2D, RWTexture3D, RWTexture2DArray
+    BufferUAV,      // u: RWStructuredBuffer<T>
+    RawBufferUAV,   // u: RWByteAddressBuffer
+    Sampler,        // s: SamplerState, SamplerComparisonState
 };
 
 enum class ShaderStage : uint8_t { Compute, Vertex, Pixel };
@@ -90,5 +90,10 @@ struct BindingSet {
 // The state each binding type needs its resource in, and whether it writes it.
 ResourceState requiredState(BindingType type);
 bool isWriteBinding(BindingType type);
+
+// The HLSL register class of a binding type: 'b', 't', 'u' or 's'.
+char registerClass(BindingType type);
+// For messages: "constant buffer", "storage texture (UAV)", ...
+const char* bindingTypeName(BindingType type);
 
 } // namespace lumina::rhi

@@ -2,6 +2,10 @@
 // Command recording. Command lists track every resource's state and place the barriers a
 // copy, dispatch or draw needs before recording it (UAV-to-UAV included), unless automatic
 // barriers are switched off for code that wants explicit control.
+#include "rhi/binding.h"
+#include "rhi/pipeline.h"
+#include "rhi/resource.h"
+
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -10,13 +14,10 @@
 #include <string_view>
 #include <vector>
 
-#include "rhi/binding.h"
-#include "rhi/pipeline.h"
-#include "rhi/resource.h"
-
 namespace lumina::rhi {
 
 enum class QueueType : uint8_t { Graphics, Compute, Copy };
+const char* queueTypeName(QueueType type); // "graphics", "compute", "copy"
 
 struct ComputeState {
     ComputePipelineHandle pipeline;
@@ -54,7 +55,7 @@ struct GraphicsState {
     std::vector<Attachment> colorAttachments;
     std::optional<Attachment> depthAttachment;
     std::vector<BindingSet> bindings;
-    Viewport viewport;         // width 0: the first attachment's full size
+    Viewport viewport;           // width 0: the first attachment's full size
     std::optional<Rect> scissor; // none: the viewport
     std::optional<IndexBufferBinding> indexBuffer;
 };
@@ -95,8 +96,9 @@ public:
     // --- copies and uploads ---------------------------------------------------------
     virtual void copyBuffer(IBuffer& dst, uint64_t dstOffset, IBuffer& src, uint64_t srcOffset,
                             uint64_t size) = 0;
-    // Buffer rows are rowPitch bytes apart (a multiple of kTextureCopyRowAlignment); a 3D
-    // slice copies every depth slice, one after another.
+    // Buffer rows are rowPitch bytes apart (a multiple of kTextureCopyRowAlignment), from an
+    // offset that is a multiple of kTextureCopyOffsetAlignment, on every backend
+    // (rhi/validation.h); a 3D slice copies every depth slice, one after another.
     virtual void copyBufferToTexture(ITexture& dst, TextureSlice slice, IBuffer& src, uint64_t srcOffset,
                                      uint32_t rowPitch) = 0;
     virtual void copyTextureToBuffer(IBuffer& dst, uint64_t dstOffset, uint32_t rowPitch, ITexture& src,

@@ -1,17 +1,18 @@
 #pragma once
 // Buffers, textures and samplers: descriptions and the interfaces backends implement.
+#include "rhi/format.h"
+#include "rhi/resource_state.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <string>
 
-#include "rhi/format.h"
-#include "rhi/resource_state.h"
-
 namespace lumina::rhi {
 
 // Where a resource lives. Upload and Readback buffers are persistently mapped.
 enum class MemoryType : uint8_t { GpuOnly, Upload, Readback };
+const char* memoryTypeName(MemoryType memory); // "GpuOnly", "Upload", "Readback"
 
 // How a buffer may be bound. Copies to and from every buffer are always allowed.
 enum class BufferUsage : uint32_t {
@@ -19,7 +20,7 @@ enum class BufferUsage : uint32_t {
     Constant = 1u << 0,   // cbuffer / ConstantBuffer<T> (b registers)
     Structured = 1u << 1, // StructuredBuffer / RWStructuredBuffer (needs stride)
     Raw = 1u << 2,        // ByteAddressBuffer / RWByteAddressBuffer
-    Storage = 1u << 3,    // may be bound read-write (u registers)
+    Storage = 1u << 3,    // may be bound read-write (u registers); GpuOnly memory only
     Index = 1u << 4,
     Indirect = 1u << 5,
 };
@@ -39,6 +40,10 @@ struct BufferDesc {
 };
 
 enum class TextureDimension : uint8_t { Texture2D, Texture2DArray, Texture3D, TextureCube, TextureCubeArray };
+const char* textureDimensionName(TextureDimension dimension); // "Texture2D", ...
+constexpr bool isCubeDimension(TextureDimension dimension) {
+    return dimension == TextureDimension::TextureCube || dimension == TextureDimension::TextureCubeArray;
+}
 
 enum class TextureUsage : uint32_t {
     None = 0,
@@ -72,7 +77,22 @@ struct TextureSlice {
     uint32_t arrayLayer = 0;
 };
 
-inline uint32_t mipExtent(uint32_t extent, uint32_t mip) { return extent >> mip ? extent >> mip : 1u; }
+inline uint32_t mipExtent(uint32_t extent, uint32_t mip) {
+    return extent >> mip ? extent >> mip : 1u;
+}
+
+struct Extent3D {
+    uint32_t width, height, depth;
+};
+// One mip of a texture; depth is 1 except for 3D textures.
+inline Extent3D mipExtent(const TextureDesc& desc, uint32_t mip) {
+    return {mipExtent(desc.width, mip), mipExtent(desc.height, mip),
+            desc.dimension == TextureDimension::Texture3D ? mipExtent(desc.depth, mip) : 1u};
+}
+// The layers a TextureSlice can name: one for a 3D texture (its depth slices go together).
+inline uint32_t sliceLayerCount(const TextureDesc& desc) {
+    return desc.dimension == TextureDimension::Texture3D ? 1u : desc.arrayLayers;
+}
 
 // Resources share the state the command lists track (rhi/state_tracker.h). The tracked
 // state is the one the resource is in after every command list recorded so far has
@@ -126,8 +146,11 @@ using BufferHandle = std::shared_ptr<IBuffer>;
 using TextureHandle = std::shared_ptr<ITexture>;
 using SamplerHandle = std::shared_ptr<ISampler>;
 
-// Row pitch that copies between textures and buffers use: D3D12 requires 256-byte rows.
+// Copies between textures and buffers: buffer rows are a multiple of 256 bytes apart
+// (D3D12_TEXTURE_DATA_PITCH_ALIGNMENT) and start at a multiple of 512 bytes
+// (D3D12_TEXTURE_DATA_PLACEMENT_ALIGNMENT); rhi/validation.h holds every backend to both.
 constexpr uint32_t kTextureCopyRowAlignment = 256;
+constexpr uint64_t kTextureCopyOffsetAlignment = 512;
 inline uint32_t alignedRowPitch(uint32_t width, Format format) {
     const uint32_t row = width * formatInfo(format).bytesPerTexel;
     return (row + kTextureCopyRowAlignment - 1) / kTextureCopyRowAlignment * kTextureCopyRowAlignment;

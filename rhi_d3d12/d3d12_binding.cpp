@@ -12,7 +12,7 @@ namespace lumina::d3d12 {
 namespace {
 
 D3D12_DESCRIPTOR_RANGE_TYPE rangeType(rhi::BindingType type) {
-    switch (registerClass(type)) {
+    switch (rhi::registerClass(type)) {
     case 'b':
         return D3D12_DESCRIPTOR_RANGE_TYPE_CBV;
     case 't':
@@ -36,51 +36,11 @@ D3D12_SHADER_VISIBILITY visibility(rhi::ShaderStageMask mask) {
 }
 
 std::string registerName(const rhi::BindingLayoutItem& item, uint32_t space) {
-    return std::string(1, registerClass(item.type)) + std::to_string(item.reg) + ", space" +
+    return std::string(1, rhi::registerClass(item.type)) + std::to_string(item.reg) + ", space" +
            std::to_string(space);
 }
 
 } // namespace
-
-char registerClass(rhi::BindingType type) {
-    switch (type) {
-    case rhi::BindingType::ConstantBuffer:
-        return 'b';
-    case rhi::BindingType::TextureSRV:
-    case rhi::BindingType::BufferSRV:
-    case rhi::BindingType::RawBufferSRV:
-        return 't';
-    case rhi::BindingType::TextureUAV:
-    case rhi::BindingType::BufferUAV:
-    case rhi::BindingType::RawBufferUAV:
-        return 'u';
-    case rhi::BindingType::Sampler:
-        return 's';
-    }
-    return '?';
-}
-
-const char* bindingTypeName(rhi::BindingType type) {
-    switch (type) {
-    case rhi::BindingType::ConstantBuffer:
-        return "constant buffer";
-    case rhi::BindingType::TextureSRV:
-        return "sampled texture (SRV)";
-    case rhi::BindingType::BufferSRV:
-        return "structured buffer (SRV)";
-    case rhi::BindingType::RawBufferSRV:
-        return "raw buffer (SRV)";
-    case rhi::BindingType::TextureUAV:
-        return "storage texture (UAV)";
-    case rhi::BindingType::BufferUAV:
-        return "RW structured buffer (UAV)";
-    case rhi::BindingType::RawBufferUAV:
-        return "RW raw buffer (UAV)";
-    case rhi::BindingType::Sampler:
-        return "sampler";
-    }
-    return "?";
-}
 
 BindingLayout::BindingLayout(const rhi::BindingLayoutDesc& desc) : desc_(desc) {
     if (desc.space == kPushConstantSpace) {
@@ -89,7 +49,7 @@ BindingLayout::BindingLayout(const rhi::BindingLayoutDesc& desc) : desc_(desc) {
     std::set<std::pair<char, uint32_t>> seen;
     key_ = std::to_string(desc.space) + ":" + std::to_string(int(desc.visibility)) + ":";
     for (const rhi::BindingLayoutItem& item : desc.items) {
-        if (!seen.insert({registerClass(item.type), item.reg}).second) {
+        if (!seen.insert({rhi::registerClass(item.type), item.reg}).second) {
             throw rhi::Error("createBindingLayout: register " + registerName(item, desc.space) +
                              " appears twice");
         }
@@ -228,7 +188,7 @@ WrittenBindingSet writeBindingSet(ID3D12Device* device, const BindingLayout& lay
         const rhi::BindingLayoutItem& expected = items[i];
         const rhi::BindingSetItem* item = nullptr;
         for (const rhi::BindingSetItem& candidate : set.items) {
-            if (registerClass(candidate.type) == registerClass(expected.type) &&
+            if (rhi::registerClass(candidate.type) == rhi::registerClass(expected.type) &&
                 candidate.reg == expected.reg) {
                 item = &candidate;
                 break;
@@ -239,8 +199,8 @@ WrittenBindingSet writeBindingSet(ID3D12Device* device, const BindingLayout& lay
             throw rhi::Error("binding set leaves " + where + " of its layout unbound");
         }
         if (item->type != expected.type) {
-            throw rhi::Error("binding set binds " + where + " as a " + bindingTypeName(item->type) +
-                             ", the layout declares a " + bindingTypeName(expected.type));
+            throw rhi::Error("binding set binds " + where + " as a " + rhi::bindingTypeName(item->type) +
+                             ", the layout declares a " + rhi::bindingTypeName(expected.type));
         }
         D3D12_CPU_DESCRIPTOR_HANDLE source{};
         const rhi::TextureDimension* dimension = item->overrideDimension ? &item->viewDimension : nullptr;

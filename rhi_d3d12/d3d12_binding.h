@@ -21,9 +21,6 @@ namespace lumina::d3d12 {
 constexpr uint32_t kPushConstantSpace = 999;
 constexpr uint32_t kMaxPushConstantBytes = 128;
 
-char registerClass(rhi::BindingType type); // 'b', 't', 'u' or 's'
-const char* bindingTypeName(rhi::BindingType type);
-
 class BindingLayout final : public rhi::IBindingLayout {
 public:
     explicit BindingLayout(const rhi::BindingLayoutDesc& desc);

@@ -1,5 +1,6 @@
 #include "rhi_d3d12/d3d12_buffer.h"
 
+#include "rhi/validation.h"
 #include "rhi_d3d12/d3d12_binding.h"
 #include "rhi_d3d12/d3d12_check.h"
 
@@ -7,42 +8,19 @@
 
 namespace lumina::d3d12 {
 
-namespace {
+static_assert(rhi::kConstantBufferOffsetAlignment == kConstantBufferAlignment);
 
-// Raw views address 4-byte words and must start on 16 bytes.
-constexpr uint64_t kRawViewAlignment = 16;
+namespace {
 
 uint64_t alignUp(uint64_t value, uint64_t alignment) {
     return (value + alignment - 1) / alignment * alignment;
-}
-
-const char* memoryName(rhi::MemoryType memory) {
-    switch (memory) {
-    case rhi::MemoryType::GpuOnly:
-        return "GpuOnly";
-    case rhi::MemoryType::Upload:
-        return "Upload";
-    case rhi::MemoryType::Readback:
-        return "Readback";
-    }
-    return "?";
 }
 
 } // namespace
 
 Buffer::Buffer(ContextHandle context, const rhi::BufferDesc& desc)
     : context_(std::move(context)), desc_(desc) {
-    if (desc.size == 0) {
-        throw rhi::Error("createBuffer('" + desc.debugName + "'): size is 0");
-    }
-    if (rhi::hasFlag(desc.usage, rhi::BufferUsage::Structured) && desc.structStride == 0) {
-        throw rhi::Error("createBuffer('" + desc.debugName + "'): Structured usage needs a structStride");
-    }
-    if (rhi::hasFlag(desc.usage, rhi::BufferUsage::Storage) && desc.memory != rhi::MemoryType::GpuOnly) {
-        throw rhi::Error("createBuffer('" + desc.debugName +
-                         "'): Storage usage needs GpuOnly memory on D3D12 (" + memoryName(desc.memory) +
-                         " heaps take no UAVs)");
-    }
+    rhi::validateBufferDesc(desc);
     D3D12_RESOURCE_DESC resourceDesc{};
     resourceDesc.Dimension = D3D12_RESOURCE_DIMENSION_BUFFER;
     resourceDesc.Width = alignUp(desc.size, kConstantBufferAlignment);
@@ -104,56 +82,7 @@ void* Buffer::map() {
 }
 
 D3D12_CPU_DESCRIPTOR_HANDLE Buffer::view(rhi::BindingType type, rhi::BufferRange range) {
-    const std::string what =
-        std::string("buffer '") + desc_.debugName + "' bound as " + bindingTypeName(type);
-    if (range.offset > desc_.size) {
-        throw rhi::Error(what + ": offset " + std::to_string(range.offset) + " is past its size " +
-                         std::to_string(desc_.size));
-    }
-    const uint64_t size = range.size ? range.size : desc_.size - range.offset;
-    if (range.offset + size > desc_.size) {
-        throw rhi::Error(what + ": range [" + std::to_string(range.offset) + ", " +
-                         std::to_string(range.offset + size) + ") exceeds its size " +
-                         std::to_string(desc_.size));
-    }
-    const bool writes = type == rhi::BindingType::BufferUAV || type == rhi::BindingType::RawBufferUAV;
-    if (writes && !rhi::hasFlag(desc_.usage, rhi::BufferUsage::Storage)) {
-        throw rhi::Error(what + ": the buffer lacks BufferUsage::Storage");
-    }
-    if (desc_.memory == rhi::MemoryType::Readback) {
-        throw rhi::Error(what + ": Readback buffers can only be copied to on D3D12");
-    }
-    switch (type) {
-    case rhi::BindingType::ConstantBuffer:
-        if (!rhi::hasFlag(desc_.usage, rhi::BufferUsage::Constant)) {
-            throw rhi::Error(what + ": the buffer lacks BufferUsage::Constant");
-        }
-        if (range.offset % kConstantBufferAlignment != 0) {
-            throw rhi::Error(what + ": offset " + std::to_string(range.offset) + " is not a multiple of 256");
-        }
-        break;
-    case rhi::BindingType::BufferSRV:
-    case rhi::BindingType::BufferUAV:
-        if (!rhi::hasFlag(desc_.usage, rhi::BufferUsage::Structured) || desc_.structStride == 0) {
-            throw rhi::Error(what + ": the buffer lacks BufferUsage::Structured and a structStride");
-        }
-        if (range.offset % desc_.structStride != 0) {
-            throw rhi::Error(what + ": offset " + std::to_string(range.offset) +
-                             " is not a multiple of the stride " + std::to_string(desc_.structStride));
-        }
-        break;
-    case rhi::BindingType::RawBufferSRV:
-    case rhi::BindingType::RawBufferUAV:
-        if (!rhi::hasFlag(desc_.usage, rhi::BufferUsage::Raw)) {
-            throw rhi::Error(what + ": the buffer lacks BufferUsage::Raw");
-        }
-        if (range.offset % kRawViewAlignment != 0) {
-            throw rhi::Error(what + ": offset " + std::to_string(range.offset) + " is not a multiple of 16");
-        }
-        break;
-    default:
-        throw rhi::Error(what + ": not a buffer binding");
-    }
+    const uint64_t size = rhi::validateBufferBinding(type, *this, range);
     std::lock_guard lock(viewMutex_);
     const auto key = std::make_tuple(type, range.offset, size);
     if (const auto it = views_.find(key); it != views_.end()) {

@@ -1,4 +1,5 @@
 // Copies, uploads, fills and clears of d3d12::CommandList.
+#include "rhi/validation.h"
 #include "rhi_d3d12/d3d12_buffer.h"
 #include "rhi_d3d12/d3d12_check.h"
 #include "rhi_d3d12/d3d12_command_list.h"
@@ -13,23 +14,11 @@ namespace lumina::d3d12 {
 
 namespace {
 
-constexpr uint64_t kPlacementAlignment = D3D12_TEXTURE_DATA_PLACEMENT_ALIGNMENT; // 512
+static_assert(rhi::kTextureCopyOffsetAlignment == D3D12_TEXTURE_DATA_PLACEMENT_ALIGNMENT);
+static_assert(rhi::kTextureCopyRowAlignment == D3D12_TEXTURE_DATA_PITCH_ALIGNMENT);
 constexpr uint64_t kBufferCopyAlignment = 16;
 // Render-target clears of UINT formats pass floats; integers above 2^24 would round.
 constexpr uint32_t kExactFloatIntegers = 1u << 24;
-
-struct MipExtent {
-    uint32_t width, height, depth;
-};
-
-MipExtent extentOf(const rhi::TextureDesc& desc, uint32_t mip) {
-    return {rhi::mipExtent(desc.width, mip), rhi::mipExtent(desc.height, mip),
-            desc.dimension == rhi::TextureDimension::Texture3D ? rhi::mipExtent(desc.depth, mip) : 1u};
-}
-
-std::string slices(rhi::TextureSlice slice) {
-    return "mip " + std::to_string(slice.mipLevel) + " layer " + std::to_string(slice.arrayLayer);
-}
 
 // IEEE binary16, round to nearest even; overflow becomes infinity.
 uint16_t toHalf(float value) {
@@ -121,11 +110,8 @@ D3D12_TEXTURE_COPY_LOCATION footprintLocation(ID3D12Device* device, Texture& tex
 void CommandList::copyBuffer(rhi::IBuffer& dst, uint64_t dstOffset, rhi::IBuffer& src, uint64_t srcOffset,
                              uint64_t size) {
     requireOpen("copyBuffer()");
-    if (srcOffset + size > src.desc().size || dstOffset + size > dst.desc().size) {
-        throw rhi::Error("copyBuffer('" + src.debugName() + "' -> '" + dst.debugName() +
-                         "'): " + std::to_string(size) + " bytes from offset " + std::to_string(srcOffset) +
-                         " to offset " + std::to_string(dstOffset) + " run past a buffer's end");
-    }
+    rhi::validateBufferRange("copyBuffer (source)", src, srcOffset, size);
+    rhi::validateBufferRange("copyBuffer (destination)", dst, dstOffset, size);
     if (size == 0) {
         return;
     }
@@ -140,24 +126,7 @@ void CommandList::copyBufferToTexture(rhi::ITexture& dst, rhi::TextureSlice slic
                                       uint64_t srcOffset, uint32_t rowPitch) {
     requireOpen("copyBufferToTexture()");
     Texture& texture = toTexture(dst);
-    texture.checkSlice(slice, "copyBufferToTexture");
-    const MipExtent extent = extentOf(texture.desc(), slice.mipLevel);
-    const uint32_t packedRow = extent.width * rhi::formatInfo(texture.desc().format).bytesPerTexel;
-    const std::string what =
-        "copyBufferToTexture('" + src.debugName() + "' -> '" + dst.debugName() + "' " + slices(slice) + ")";
-    if (rowPitch % rhi::kTextureCopyRowAlignment != 0 || rowPitch < packedRow) {
-        throw rhi::Error(what + ": row pitch " + std::to_string(rowPitch) +
-                         " must be a multiple of 256 and at least " + std::to_string(packedRow));
-    }
-    if (srcOffset % kPlacementAlignment != 0) {
-        throw rhi::Error(what + ": buffer offset " + std::to_string(srcOffset) +
-                         " must be a multiple of 512 (D3D12_TEXTURE_DATA_PLACEMENT_ALIGNMENT)");
-    }
-    if (srcOffset + uint64_t(rowPitch) * extent.height * extent.depth > src.desc().size) {
-        throw rhi::Error(what + ": the buffer is smaller than " +
-                         std::to_string(extent.height * extent.depth) + " rows of " +
-                         std::to_string(rowPitch) + " bytes");
-    }
+    rhi::validateBufferTextureCopy("copyBufferToTexture", dst, slice, src, srcOffset, rowPitch);
     use(dst, rhi::ResourceState::CopyDest);
     use(src, rhi::ResourceState::CopySource);
     flushBarriers();
@@ -172,24 +141,7 @@ void CommandList::copyTextureToBuffer(rhi::IBuffer& dst, uint64_t dstOffset, uin
                                       rhi::ITexture& src, rhi::TextureSlice slice) {
     requireOpen("copyTextureToBuffer()");
     Texture& texture = toTexture(src);
-    texture.checkSlice(slice, "copyTextureToBuffer");
-    const MipExtent extent = extentOf(texture.desc(), slice.mipLevel);
-    const uint32_t packedRow = extent.width * rhi::formatInfo(texture.desc().format).bytesPerTexel;
-    const std::string what =
-        "copyTextureToBuffer('" + src.debugName() + "' " + slices(slice) + " -> '" + dst.debugName() + "')";
-    if (rowPitch % rhi::kTextureCopyRowAlignment != 0 || rowPitch < packedRow) {
-        throw rhi::Error(what + ": row pitch " + std::to_string(rowPitch) +
-                         " must be a multiple of 256 and at least " + std::to_string(packedRow));
-    }
-    if (dstOffset % kPlacementAlignment != 0) {
-        throw rhi::Error(what + ": buffer offset " + std::to_string(dstOffset) +
-                         " must be a multiple of 512 (D3D12_TEXTURE_DATA_PLACEMENT_ALIGNMENT)");
-    }
-    if (dstOffset + uint64_t(rowPitch) * extent.height * extent.depth > dst.desc().size) {
-        throw rhi::Error(what + ": the buffer is smaller than " +
-                         std::to_string(extent.height * extent.depth) + " rows of " +
-                         std::to_string(rowPitch) + " bytes");
-    }
+    rhi::validateBufferTextureCopy("copyTextureToBuffer", src, slice, dst, dstOffset, rowPitch);
     use(dst, rhi::ResourceState::CopyDest);
     use(src, rhi::ResourceState::CopySource);
     flushBarriers();
@@ -205,21 +157,7 @@ void CommandList::copyTexture(rhi::ITexture& dst, rhi::TextureSlice dstSlice, rh
     requireOpen("copyTexture()");
     Texture& target = toTexture(dst);
     Texture& source = toTexture(src);
-    target.checkSlice(dstSlice, "copyTexture destination");
-    source.checkSlice(srcSlice, "copyTexture source");
-    const MipExtent to = extentOf(target.desc(), dstSlice.mipLevel);
-    const MipExtent from = extentOf(source.desc(), srcSlice.mipLevel);
-    const std::string what = "copyTexture('" + src.debugName() + "' " + slices(srcSlice) + " -> '" +
-                             dst.debugName() + "' " + slices(dstSlice) + ")";
-    if (to.width != from.width || to.height != from.height || to.depth != from.depth) {
-        throw rhi::Error(what + ": extents differ (" + std::to_string(from.width) + "x" +
-                         std::to_string(from.height) + "x" + std::to_string(from.depth) + " -> " +
-                         std::to_string(to.width) + "x" + std::to_string(to.height) + "x" +
-                         std::to_string(to.depth) + ")");
-    }
-    if (target.desc().format != source.desc().format) {
-        throw rhi::Error(what + ": formats differ");
-    }
+    rhi::validateTextureCopy(dst, dstSlice, src, srcSlice);
     use(dst, rhi::ResourceState::CopyDest);
     use(src, rhi::ResourceState::CopySource);
     flushBarriers();
@@ -231,11 +169,7 @@ void CommandList::copyTexture(rhi::ITexture& dst, rhi::TextureSlice dstSlice, rh
 
 void CommandList::writeBuffer(rhi::IBuffer& dst, const void* data, uint64_t size, uint64_t dstOffset) {
     requireOpen("writeBuffer()");
-    if (dstOffset + size > dst.desc().size) {
-        throw rhi::Error("writeBuffer('" + dst.debugName() + "'): " + std::to_string(size) +
-                         " bytes at offset " + std::to_string(dstOffset) + " run past its size " +
-                         std::to_string(dst.desc().size));
-    }
+    rhi::validateBufferRange("writeBuffer", dst, dstOffset, size);
     if (size == 0) {
         return;
     }
@@ -250,9 +184,9 @@ void CommandList::writeBuffer(rhi::IBuffer& dst, const void* data, uint64_t size
 void CommandList::writeTexture(rhi::ITexture& dst, rhi::TextureSlice slice, const void* data) {
     requireOpen("writeTexture()");
     Texture& texture = toTexture(dst);
-    texture.checkSlice(slice, "writeTexture");
-    const uint32_t packedRow =
-        extentOf(texture.desc(), slice.mipLevel).width * rhi::formatInfo(texture.desc().format).bytesPerTexel;
+    rhi::validateTextureSlice("writeTexture", dst, slice);
+    const uint32_t packedRow = rhi::mipExtent(texture.desc(), slice.mipLevel).width *
+                               rhi::formatInfo(texture.desc().format).bytesPerTexel;
     uploadToTexture(texture, slice, data, packedRow);
 }
 
@@ -260,11 +194,12 @@ void CommandList::writeTexture(rhi::ITexture& dst, rhi::TextureSlice slice, cons
 // `data`) into upload memory at the 256-byte pitch, then one CopyTextureRegion.
 void CommandList::uploadToTexture(Texture& texture, rhi::TextureSlice slice, const void* data,
                                   uint32_t packedRowBytes) {
-    const MipExtent extent = extentOf(texture.desc(), slice.mipLevel);
+    const rhi::Extent3D extent = rhi::mipExtent(texture.desc(), slice.mipLevel);
     const uint32_t texelBytes = rhi::formatInfo(texture.desc().format).bytesPerTexel;
     const uint32_t pitch = rhi::alignedRowPitch(extent.width, texture.desc().format);
     const uint32_t rows = extent.height * extent.depth;
-    const UploadAllocation staging = upload_.allocate(uint64_t(pitch) * rows, kPlacementAlignment);
+    const UploadAllocation staging =
+        upload_.allocate(uint64_t(pitch) * rows, rhi::kTextureCopyOffsetAlignment);
     const auto* source = static_cast<const uint8_t*>(data);
     for (uint32_t row = 0; row < rows; ++row) {
         uint8_t* out = staging.cpu + size_t(row) * pitch;

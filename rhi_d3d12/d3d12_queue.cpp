@@ -13,18 +13,6 @@ namespace {
 // How often a CPU wait wakes to ask whether the device was removed.
 constexpr DWORD kDeviceCheckIntervalMs = 1000;
 
-const char* queueName(rhi::QueueType type) {
-    switch (type) {
-    case rhi::QueueType::Graphics:
-        return "graphics";
-    case rhi::QueueType::Compute:
-        return "compute";
-    case rhi::QueueType::Copy:
-        return "copy";
-    }
-    return "?";
-}
-
 } // namespace
 
 D3D12_COMMAND_LIST_TYPE toD3D12(rhi::QueueType type) {
@@ -75,7 +63,7 @@ Queue::Queue(ContextHandle context, rhi::QueueType type) : context_(std::move(co
     desc.Type = toD3D12(type);
     desc.Priority = D3D12_COMMAND_QUEUE_PRIORITY_NORMAL;
     ID3D12Device* device = context_->device();
-    const std::string name = std::string("lumina ") + queueName(type) + " queue";
+    const std::string name = std::string("lumina ") + rhi::queueTypeName(type) + " queue";
     check(device->CreateCommandQueue(&desc, IID_PPV_ARGS(&queue_)),
           "ID3D12Device::CreateCommandQueue(" + name + ")", *context_);
     setDebugName(queue_.Get(), name);
@@ -94,13 +82,13 @@ uint64_t Queue::submit(std::span<rhi::ICommandList* const> lists) {
     for (rhi::ICommandList* list : lists) {
         auto* native = dynamic_cast<CommandList*>(list);
         if (!native) {
-            throw rhi::Error(std::string("submit to the ") + queueName(type_) +
+            throw rhi::Error(std::string("submit to the ") + rhi::queueTypeName(type_) +
                              " queue: a command list is null or from another backend");
         }
         if (native->queueType() != type_) {
-            throw rhi::Error(std::string("submit to the ") + queueName(type_) + " queue: command list '" +
-                             native->name() + "' was created for the " + queueName(native->queueType()) +
-                             " queue");
+            throw rhi::Error(std::string("submit to the ") + rhi::queueTypeName(type_) +
+                             " queue: command list '" + native->name() + "' was created for the " +
+                             rhi::queueTypeName(native->queueType()) + " queue");
         }
         submitted.push_back(native->prepareSubmit());
         natives.push_back(native);
@@ -125,10 +113,10 @@ void Queue::waitForQueue(rhi::IQueue& other, uint64_t value) {
     }
     if (const uint64_t last = native->lastSubmittedValue(); value > last) {
         // The GPU would wait forever.
-        throw rhi::Error(std::string("waitForQueue: the ") + queueName(type_) +
+        throw rhi::Error(std::string("waitForQueue: the ") + rhi::queueTypeName(type_) +
                          " queue would wait for value " + std::to_string(value) + " of the " +
-                         queueName(native->type()) + " queue, which has only " + std::to_string(last) +
-                         " submissions");
+                         rhi::queueTypeName(native->type()) + " queue, which has only " +
+                         std::to_string(last) + " submissions");
     }
     check(queue_->Wait(native->fence(), value), "ID3D12CommandQueue::Wait", *context_);
 }
@@ -141,7 +129,8 @@ uint64_t Queue::lastSubmittedValue() {
 uint64_t Queue::completedValue() {
     const uint64_t value = fence_->GetCompletedValue();
     if (value == UINT64_MAX && FAILED(context_->device()->GetDeviceRemovedReason())) {
-        context_->throwDeviceLost(std::string("completedValue() of the ") + queueName(type_) + " queue");
+        context_->throwDeviceLost(std::string("completedValue() of the ") + rhi::queueTypeName(type_) +
+                                  " queue");
     }
     return value;
 }
@@ -151,7 +140,7 @@ void Queue::waitForValue(uint64_t value) {
         std::lock_guard lock(mutex_);
         if (value > lastSignaled_) {
             throw rhi::Error(std::string("waitForValue(") + std::to_string(value) + ") on the " +
-                             queueName(type_) + " queue: only " + std::to_string(lastSignaled_) +
+                             rhi::queueTypeName(type_) + " queue: only " + std::to_string(lastSignaled_) +
                              " submissions were made");
         }
     }

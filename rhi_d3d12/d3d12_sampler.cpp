@@ -1,6 +1,7 @@
 #include "rhi_d3d12/d3d12_sampler.h"
 
 #include "rhi/error.h"
+#include "rhi/validation.h"
 
 #include <algorithm>
 #include <string>
@@ -53,10 +54,7 @@ D3D12_COMPARISON_FUNC toD3D12(rhi::CompareOp op) {
 
 Sampler::Sampler(ContextHandle context, const rhi::SamplerDesc& desc)
     : context_(std::move(context)), desc_(desc) {
-    if (desc.maxAnisotropy < 1.0f || desc.maxAnisotropy > float(D3D12_MAX_MAXANISOTROPY)) {
-        throw rhi::Error("createSampler('" + desc.debugName + "'): maxAnisotropy " +
-                         std::to_string(desc.maxAnisotropy) + " is outside [1, 16]");
-    }
+    rhi::validateSamplerDesc(desc);
     const D3D12_FILTER_REDUCTION_TYPE reduction =
         desc.compareEnable ? D3D12_FILTER_REDUCTION_TYPE_COMPARISON : D3D12_FILTER_REDUCTION_TYPE_STANDARD;
     D3D12_SAMPLER_DESC sampler{};

@@ -1,10 +1,10 @@
 #include "rhi_d3d12/d3d12_texture.h"
 
+#include "rhi/validation.h"
 #include "rhi_d3d12/d3d12_check.h"
 #include "rhi_d3d12/d3d12_format.h"
 
 #include <algorithm>
-#include <bit>
 #include <string>
 
 namespace lumina::d3d12 {
@@ -12,11 +12,6 @@ namespace lumina::d3d12 {
 namespace {
 
 constexpr UINT kAllRemaining = UINT(-1);
-
-bool isCube(rhi::TextureDimension dimension) {
-    return dimension == rhi::TextureDimension::TextureCube ||
-           dimension == rhi::TextureDimension::TextureCubeArray;
-}
 
 std::string describe(const rhi::TextureDesc& desc) {
     return "texture '" + desc.debugName + "'";
@@ -26,21 +21,9 @@ std::string describe(const rhi::TextureDesc& desc) {
 
 Texture::Texture(ContextHandle context, const rhi::TextureDesc& desc)
     : context_(std::move(context)), desc_(desc) {
+    rhi::validateTextureDesc(desc);
     const DxgiFormats& formats = dxgiFormats(desc.format);
     const bool is3D = desc.dimension == rhi::TextureDimension::Texture3D;
-    if (desc.width == 0 || desc.height == 0 || desc.depth == 0 || desc.arrayLayers == 0 ||
-        desc.mipLevels == 0) {
-        throw rhi::Error("createTexture('" + desc.debugName + "'): zero extent, layer or mip count");
-    }
-    if (isCube(desc.dimension) && desc.arrayLayers % 6 != 0) {
-        throw rhi::Error("createTexture('" + desc.debugName +
-                         "'): a cube texture needs a multiple of 6 layers, not " +
-                         std::to_string(desc.arrayLayers));
-    }
-    if (isCube(desc.dimension) && desc.width != desc.height) {
-        throw rhi::Error("createTexture('" + desc.debugName + "'): cube faces must be square, not " +
-                         std::to_string(desc.width) + "x" + std::to_string(desc.height));
-    }
     const uint32_t largest = std::max({desc.width, desc.height, is3D ? desc.depth : 1u});
     const uint32_t maxExtent =
         is3D ? D3D12_REQ_TEXTURE3D_U_V_OR_W_DIMENSION : D3D12_REQ_TEXTURE2D_U_OR_V_DIMENSION;
@@ -49,15 +32,6 @@ Texture::Texture(ContextHandle context, const rhi::TextureDesc& desc)
                          " texels or " + std::to_string(desc.arrayLayers) +
                          " layers exceed D3D12's limits (" + std::to_string(maxExtent) + ", 2048 layers)");
     }
-    if (desc.mipLevels > uint32_t(std::bit_width(largest))) {
-        throw rhi::Error("createTexture('" + desc.debugName + "'): " + std::to_string(desc.mipLevels) +
-                         " mips, a " + std::to_string(largest) + "-texel texture has at most " +
-                         std::to_string(std::bit_width(largest)));
-    }
-    if (is3D && desc.arrayLayers != 1) {
-        throw rhi::Error("createTexture('" + desc.debugName + "'): a 3D texture has one array layer");
-    }
-    const bool depth = rhi::isDepthFormat(desc.format);
     if (rhi::hasFlag(desc.usage, rhi::TextureUsage::Storage) && formats.uav == DXGI_FORMAT_UNKNOWN) {
         throw rhi::Error("createTexture('" + desc.debugName + "'): format " +
                          std::string(rhi::formatInfo(desc.format).name) +
@@ -66,10 +40,6 @@ Texture::Texture(ContextHandle context, const rhi::TextureDesc& desc)
     if (rhi::hasFlag(desc.usage, rhi::TextureUsage::RenderTarget) && formats.rtv == DXGI_FORMAT_UNKNOWN) {
         throw rhi::Error("createTexture('" + desc.debugName + "'): format " +
                          std::string(rhi::formatInfo(desc.format).name) + " is not a colour render target");
-    }
-    if (rhi::hasFlag(desc.usage, rhi::TextureUsage::DepthStencil) && (!depth || is3D)) {
-        throw rhi::Error("createTexture('" + desc.debugName +
-                         "'): DepthStencil usage needs a 2D depth format");
     }
 
     D3D12_RESOURCE_DESC resourceDesc{};
@@ -114,12 +84,7 @@ uint32_t Texture::subresource(rhi::TextureSlice slice) const {
 }
 
 void Texture::checkSlice(rhi::TextureSlice slice, const char* what) const {
-    const uint32_t layers = desc_.dimension == rhi::TextureDimension::Texture3D ? 1 : desc_.arrayLayers;
-    if (slice.mipLevel >= desc_.mipLevels || slice.arrayLayer >= layers) {
-        throw rhi::Error(std::string(what) + ": mip " + std::to_string(slice.mipLevel) + " layer " +
-                         std::to_string(slice.arrayLayer) + " is outside " + describe(desc_) + " (" +
-                         std::to_string(desc_.mipLevels) + " mips, " + std::to_string(layers) + " layers)");
-    }
+    rhi::validateTextureSlice(what, *this, slice);
 }
 
 StagingDescriptorHeap& Texture::heapFor(ViewKind kind) const {
@@ -135,33 +100,18 @@ StagingDescriptorHeap& Texture::heapFor(ViewKind kind) const {
 
 D3D12_CPU_DESCRIPTOR_HANDLE Texture::srv(const rhi::TextureSubresources& sub,
                                          const rhi::TextureDimension* dimension) {
-    if (!rhi::hasFlag(desc_.usage, rhi::TextureUsage::Sampled)) {
-        throw rhi::Error(describe(desc_) + " is bound as a sampled texture but lacks TextureUsage::Sampled");
-    }
-    const uint32_t layers = desc_.dimension == rhi::TextureDimension::Texture3D ? 1 : desc_.arrayLayers;
-    if (sub.baseMip >= desc_.mipLevels || sub.baseLayer >= layers) {
-        throw rhi::Error(describe(desc_) + ": sampled view starts at mip " + std::to_string(sub.baseMip) +
-                         ", layer " + std::to_string(sub.baseLayer) + ", outside the texture");
-    }
+    rhi::validateTextureBinding(rhi::BindingType::TextureSRV, *this, sub);
+    const uint32_t layers = rhi::sliceLayerCount(desc_);
     const uint32_t mips = sub.mipCount ? sub.mipCount : desc_.mipLevels - sub.baseMip;
     const uint32_t count = sub.layerCount ? sub.layerCount : layers - sub.baseLayer;
-    if (sub.baseMip + mips > desc_.mipLevels || sub.baseLayer + count > layers) {
-        throw rhi::Error(describe(desc_) + ": sampled view's mip or layer range exceeds the texture");
-    }
     return cachedView(
         {ViewKind::Srv, dimension ? *dimension : desc_.dimension, sub.baseMip, mips, sub.baseLayer, count});
 }
 
 D3D12_CPU_DESCRIPTOR_HANDLE Texture::uav(uint32_t mip, const rhi::TextureDimension* dimension) {
-    if (!rhi::hasFlag(desc_.usage, rhi::TextureUsage::Storage)) {
-        throw rhi::Error(describe(desc_) + " is bound as a storage texture but lacks TextureUsage::Storage");
-    }
-    if (mip >= desc_.mipLevels) {
-        throw rhi::Error(describe(desc_) + ": storage view of mip " + std::to_string(mip) + " (it has " +
-                         std::to_string(desc_.mipLevels) + ")");
-    }
+    rhi::validateTextureBinding(rhi::BindingType::TextureUAV, *this, {.baseMip = mip, .mipCount = 1});
     rhi::TextureDimension viewDimension = dimension ? *dimension : desc_.dimension;
-    if (isCube(viewDimension)) {
+    if (rhi::isCubeDimension(viewDimension)) {
         viewDimension = rhi::TextureDimension::Texture2DArray; // UAVs of cubes are 2D arrays
     }
     const uint32_t layers = desc_.dimension == rhi::TextureDimension::Texture3D

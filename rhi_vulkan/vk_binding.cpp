@@ -1,6 +1,7 @@
 #include "rhi_vulkan/vk_binding.h"
 
 #include "rhi/error.h"
+#include "rhi/validation.h"
 #include "rhi_vulkan/vk_buffer.h"
 #include "rhi_vulkan/vk_check.h"
 #include "rhi_vulkan/vk_context.h"
@@ -17,26 +18,8 @@ namespace lumina::vulkan {
 
 namespace {
 
-char registerClass(rhi::BindingType type) {
-    switch (type) {
-    case rhi::BindingType::ConstantBuffer:
-        return 'b';
-    case rhi::BindingType::TextureSRV:
-    case rhi::BindingType::BufferSRV:
-    case rhi::BindingType::RawBufferSRV:
-        return 't';
-    case rhi::BindingType::TextureUAV:
-    case rhi::BindingType::BufferUAV:
-    case rhi::BindingType::RawBufferUAV:
-        return 'u';
-    case rhi::BindingType::Sampler:
-        return 's';
-    }
-    return '?';
-}
-
 std::string registerName(rhi::BindingType type, uint32_t reg, uint32_t space) {
-    return std::string(1, registerClass(type)) + std::to_string(reg) + ", space" + std::to_string(space);
+    return std::string(1, rhi::registerClass(type)) + std::to_string(reg) + ", space" + std::to_string(space);
 }
 
 bool isBufferBinding(rhi::BindingType type) {
@@ -52,31 +35,21 @@ VkDescriptorBufferInfo bufferInfo(const Context& context, const rhi::BindingSetI
     }
     const rhi::BufferDesc& desc = buffer->desc();
     const std::string what = where + " buffer '" + desc.debugName + "'";
-    using U = rhi::BufferUsage;
+    uint64_t size = 0;
+    try {
+        size = rhi::validateBufferBinding(item.type, *buffer, item.range);
+    } catch (const rhi::Error& error) {
+        throw rhi::Error(where + ": " + error.what());
+    }
+    // Beyond the RHI's rules (rhi/validation.h): this device's offset alignment and range.
     const bool constant = item.type == rhi::BindingType::ConstantBuffer;
-    const bool writable = rhi::isWriteBinding(item.type);
-    if (constant && !hasFlag(desc.usage, U::Constant)) {
-        throw rhi::Error(what + ": bound as a constant buffer without BufferUsage::Constant");
-    }
-    if (!constant && !hasFlag(desc.usage, U::Structured) && !hasFlag(desc.usage, U::Raw)) {
-        throw rhi::Error(what +
-                         ": bound as a structured or raw buffer without BufferUsage::Structured or Raw");
-    }
-    if (writable && !hasFlag(desc.usage, U::Storage)) {
-        throw rhi::Error(what + ": bound read-write (u register) without BufferUsage::Storage");
-    }
     const VkPhysicalDeviceLimits& limits = context.limits();
     const uint64_t alignment =
         constant ? limits.minUniformBufferOffsetAlignment : limits.minStorageBufferOffsetAlignment;
     const uint64_t maxRange = constant ? limits.maxUniformBufferRange : limits.maxStorageBufferRange;
-    if (item.range.offset >= desc.size || item.range.offset % alignment != 0) {
+    if (item.range.offset % alignment != 0) {
         throw rhi::Error(what + ": range offset " + std::to_string(item.range.offset) +
-                         " is past the end or not a multiple of " + std::to_string(alignment));
-    }
-    uint64_t size = item.range.size ? item.range.size : desc.size - item.range.offset;
-    if (item.range.offset + size > desc.size) {
-        throw rhi::Error(what + ": range " + std::to_string(item.range.offset) + "+" + std::to_string(size) +
-                         " is past the end (" + std::to_string(desc.size) + " bytes)");
+                         " is not a multiple of this device's " + std::to_string(alignment));
     }
     if (size > maxRange) {
         if (!constant || item.range.size != 0) {
@@ -94,15 +67,14 @@ VkDescriptorImageInfo textureInfo(const rhi::BindingSetItem& item, const std::st
         throw rhi::Error(where + ": no texture bound");
     }
     const bool storage = item.type == rhi::BindingType::TextureUAV;
-    const auto usage = storage ? rhi::TextureUsage::Storage : rhi::TextureUsage::Sampled;
-    if (!hasFlag(texture->desc().usage, usage)) {
-        throw rhi::Error(where + " texture '" + texture->debugName() + "': bound as " +
-                         (storage ? "a storage texture without TextureUsage::Storage"
-                                  : "a sampled texture without TextureUsage::Sampled"));
-    }
     rhi::TextureSubresources sub = item.subresources;
     if (storage) {
         sub.mipCount = 1; // a UAV sees one mip
+    }
+    try {
+        rhi::validateTextureBinding(item.type, *texture, sub);
+    } catch (const rhi::Error& error) {
+        throw rhi::Error(where + ": " + error.what());
     }
     VkDescriptorImageInfo info{};
     info.imageView = texture->view(bindingViewDimension(item), sub);
@@ -113,7 +85,7 @@ VkDescriptorImageInfo textureInfo(const rhi::BindingSetItem& item, const std::st
 } // namespace
 
 uint32_t bindingNumber(rhi::BindingType type, uint32_t reg) {
-    switch (registerClass(type)) {
+    switch (rhi::registerClass(type)) {
     case 'b':
         return kConstantBufferShift + reg;
     case 't':
@@ -228,7 +200,7 @@ VkDescriptorSet writeBindingSet(Context& context, DescriptorAllocator& allocator
         const std::string where = std::string(user) + " " + registerName(slot.type, slot.reg, desc.space);
         const rhi::BindingSetItem* found = nullptr;
         for (const rhi::BindingSetItem& item : set.items) {
-            if (item.reg == slot.reg && registerClass(item.type) == registerClass(slot.type)) {
+            if (item.reg == slot.reg && rhi::registerClass(item.type) == rhi::registerClass(slot.type)) {
                 found = &item;
             }
         }

@@ -1,6 +1,7 @@
 #include "rhi_vulkan/vk_buffer.h"
 
 #include "rhi/error.h"
+#include "rhi/validation.h"
 #include "rhi_vulkan/vk_check.h"
 #include "rhi_vulkan/vk_context.h"
 #include "rhi_vulkan/vk_struct.h"
@@ -34,12 +35,7 @@ VkBufferUsageFlags usageFlags(rhi::BufferUsage usage) {
 
 Buffer::Buffer(std::shared_ptr<Context> context, const rhi::BufferDesc& desc)
     : context_(std::move(context)), desc_(desc) {
-    if (desc_.size == 0) {
-        throw rhi::Error("createBuffer '" + desc_.debugName + "': size is 0");
-    }
-    if (hasFlag(desc_.usage, rhi::BufferUsage::Structured) && desc_.structStride == 0) {
-        throw rhi::Error("createBuffer '" + desc_.debugName + "': Structured usage needs a structStride");
-    }
+    rhi::validateBufferDesc(desc_);
     const VkDevice device = context_->device();
     auto info = vkStruct<VkBufferCreateInfo>(VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO);
     info.size = desc_.size;

@@ -35,7 +35,7 @@ void recordGlobalBarrier(VkCommandBuffer commandBuffer, VkPipelineStageFlags2 ds
 CommandList::CommandList(std::shared_ptr<Context> context, rhi::QueueType type,
                          std::shared_ptr<HardwareQueue> hardware)
     : context_(std::move(context)), type_(type), hardware_(std::move(hardware)), descriptors_(context_),
-      upload_(context_, std::string("upload ring of a ") + queueName(type) + " command list"),
+      upload_(context_, std::string("upload ring of a ") + rhi::queueTypeName(type) + " command list"),
       timestamps_(context_, hardware_->timestampValidBits) {
     auto poolInfo = vkStruct<VkCommandPoolCreateInfo>(VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO);
     poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
@@ -54,7 +54,7 @@ CommandList::CommandList(std::shared_ptr<Context> context, rhi::QueueType type,
         throw;
     }
     context_->setName(VK_OBJECT_TYPE_COMMAND_BUFFER, commandBuffer_,
-                      std::string(queueName(type)) + " command list");
+                      std::string(rhi::queueTypeName(type)) + " command list");
 }
 
 CommandList::~CommandList() {
@@ -85,7 +85,7 @@ void CommandList::releaseRecordingResources() {
 
 void CommandList::begin() {
     if (phase_ == Phase::Recording) {
-        throw rhi::Error(std::string("begin: the ") + queueName(type_) +
+        throw rhi::Error(std::string("begin: the ") + rhi::queueTypeName(type_) +
                          " command list is already recording");
     }
     waitForSubmission();
@@ -129,8 +129,8 @@ void CommandList::end() {
 }
 
 void CommandList::checkSubmittable(const Queue& queue) const {
-    const std::string where = std::string("submit of a ") + queueName(type_) + " command list to the " +
-                              queueName(queue.type()) + " queue: ";
+    const std::string where = std::string("submit of a ") + rhi::queueTypeName(type_) +
+                              " command list to the " + rhi::queueTypeName(queue.type()) + " queue: ";
     if (phase_ != Phase::Ended) {
         throw rhi::Error(where + (phase_ == Phase::Submitted
                                       ? "already submitted; begin() and record it again"
@@ -149,7 +149,7 @@ void CommandList::markSubmitted(std::shared_ptr<Queue> queue, uint64_t value) {
 
 void CommandList::requireRecording(const char* command) const {
     if (phase_ != Phase::Recording) {
-        throw rhi::Error(std::string(command) + ": the " + queueName(type_) +
+        throw rhi::Error(std::string(command) + ": the " + rhi::queueTypeName(type_) +
                          " command list is not recording (call begin())");
     }
 }
@@ -329,7 +329,7 @@ std::vector<rhi::TimerResult> CommandList::timerResults() {
         return previousTimerResults_;
     }
     if (submittedTo_->completedValue() < submittedValue_) {
-        throw rhi::Error(std::string("timerResults: the ") + queueName(type_) +
+        throw rhi::Error(std::string("timerResults: the ") + rhi::queueTypeName(type_) +
                          " command list's submission has not finished; wait for value " +
                          std::to_string(submittedValue_) + " of its queue first");
     }

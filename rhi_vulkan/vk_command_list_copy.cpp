@@ -1,5 +1,6 @@
 // Copies, uploads, fills and clears.
 #include "rhi/error.h"
+#include "rhi/validation.h"
 #include "rhi_vulkan/vk_buffer.h"
 #include "rhi_vulkan/vk_command_list.h"
 #include "rhi_vulkan/vk_context.h"
@@ -17,17 +18,8 @@ using S = rhi::ResourceState;
 // Uploads are placed at offsets valid for any texel size and for depth copies (4 bytes).
 constexpr uint64_t kUploadAlignment = 16;
 
-std::string sliceName(const Texture& texture, rhi::TextureSlice slice) {
-    return "texture '" + texture.debugName() + "' mip " + std::to_string(slice.mipLevel) + " layer " +
-           std::to_string(slice.arrayLayer);
-}
-
 VkImageSubresourceLayers subresource(const Texture& texture, rhi::TextureSlice slice, const char* command) {
-    if (slice.mipLevel >= texture.desc().mipLevels || slice.arrayLayer >= texture.layerCount()) {
-        throw rhi::Error(std::string(command) + ": " + sliceName(texture, slice) + " does not exist (" +
-                         std::to_string(texture.desc().mipLevels) + " mips, " +
-                         std::to_string(texture.layerCount()) + " layers)");
-    }
+    rhi::validateTextureSlice(command, texture, slice);
     return {texture.aspect(), slice.mipLevel, slice.arrayLayer, 1};
 }
 
@@ -36,24 +28,14 @@ uint64_t texelBytes(const Texture& texture) {
 }
 
 // The buffer side of a buffer <-> texture copy: rows `rowPitch` apart, slices of a 3D
-// texture one after another. Checks the pitch and that the buffer holds it all.
+// texture one after another (the rules: rhi::validateBufferTextureCopy). The RHI's offset
+// and pitch alignments are multiples of every texel size, as Vulkan requires.
 VkBufferImageCopy bufferImageCopy(const Texture& texture, rhi::TextureSlice slice, const Buffer& buffer,
                                   uint64_t offset, uint32_t rowPitch, const char* command) {
+    rhi::validateBufferTextureCopy(command, texture, slice, buffer, offset, rowPitch);
     const VkImageSubresourceLayers layers = subresource(texture, slice, command);
     const VkExtent3D extent = texture.mipExtent(slice.mipLevel);
     const uint64_t texel = texelBytes(texture);
-    const uint64_t bytes = uint64_t(rowPitch) * extent.height * extent.depth;
-    if (rowPitch % texel != 0 || rowPitch < extent.width * texel || offset % 4 != 0 || offset % texel != 0) {
-        throw rhi::Error(std::string(command) + ": " + sliceName(texture, slice) + ": row pitch " +
-                         std::to_string(rowPitch) + " or offset " + std::to_string(offset) +
-                         " is not a multiple of the texel size or is shorter than a row");
-    }
-    if (offset + bytes > buffer.desc().size) {
-        throw rhi::Error(std::string(command) + ": " + sliceName(texture, slice) + " needs " +
-                         std::to_string(bytes) + " bytes at offset " + std::to_string(offset) +
-                         " of buffer '" + buffer.debugName() + "' (" + std::to_string(buffer.desc().size) +
-                         " bytes)");
-    }
     VkBufferImageCopy region{};
     region.bufferOffset = offset;
     region.bufferRowLength = static_cast<uint32_t>(rowPitch / texel);
@@ -61,14 +43,6 @@ VkBufferImageCopy bufferImageCopy(const Texture& texture, rhi::TextureSlice slic
     region.imageSubresource = layers;
     region.imageExtent = extent;
     return region;
-}
-
-void checkBufferRange(const Buffer& buffer, uint64_t offset, uint64_t size, const char* command) {
-    if (offset > buffer.desc().size || size > buffer.desc().size - offset) {
-        throw rhi::Error(std::string(command) + ": bytes " + std::to_string(offset) + "+" +
-                         std::to_string(size) + " are outside buffer '" + buffer.debugName() + "' (" +
-                         std::to_string(buffer.desc().size) + " bytes)");
-    }
 }
 
 VkImageSubresourceRange wholeTexture(const Texture& texture) {
@@ -82,8 +56,8 @@ void CommandList::copyBuffer(rhi::IBuffer& dst, uint64_t dstOffset, rhi::IBuffer
     requireRecording("copyBuffer");
     Buffer& to = buffer(dst, "copyBuffer");
     Buffer& from = buffer(src, "copyBuffer");
-    checkBufferRange(to, dstOffset, size, "copyBuffer");
-    checkBufferRange(from, srcOffset, size, "copyBuffer");
+    rhi::validateBufferRange("copyBuffer (source)", from, srcOffset, size);
+    rhi::validateBufferRange("copyBuffer (destination)", to, dstOffset, size);
     prepare([&] {
         require(to, S::CopyDest);
         require(from, S::CopySource);
@@ -130,17 +104,11 @@ void CommandList::copyTexture(rhi::ITexture& dst, rhi::TextureSlice dstSlice, rh
     requireRecording("copyTexture");
     Texture& to = texture(dst, "copyTexture");
     Texture& from = texture(src, "copyTexture");
+    rhi::validateTextureCopy(to, dstSlice, from, srcSlice);
     VkImageCopy region{};
     region.srcSubresource = subresource(from, srcSlice, "copyTexture");
     region.dstSubresource = subresource(to, dstSlice, "copyTexture");
     region.extent = from.mipExtent(srcSlice.mipLevel);
-    const VkExtent3D dstExtent = to.mipExtent(dstSlice.mipLevel);
-    if (region.extent.width != dstExtent.width || region.extent.height != dstExtent.height ||
-        region.extent.depth != dstExtent.depth || texelBytes(to) != texelBytes(from) ||
-        to.aspect() != from.aspect()) {
-        throw rhi::Error("copyTexture: " + sliceName(from, srcSlice) + " and " + sliceName(to, dstSlice) +
-                         " differ in size or texel format");
-    }
     prepare([&] {
         require(to, S::CopyDest);
         require(from, S::CopySource);
@@ -153,7 +121,7 @@ void CommandList::copyTexture(rhi::ITexture& dst, rhi::TextureSlice dstSlice, rh
 void CommandList::writeBuffer(rhi::IBuffer& dst, const void* data, uint64_t size, uint64_t dstOffset) {
     requireRecording("writeBuffer");
     Buffer& to = buffer(dst, "writeBuffer");
-    checkBufferRange(to, dstOffset, size, "writeBuffer");
+    rhi::validateBufferRange("writeBuffer", to, dstOffset, size);
     if (size == 0) {
         return;
     }

@@ -24,18 +24,6 @@ uint32_t findMemoryType(const VkPhysicalDeviceMemoryProperties& properties, uint
     return kNoMemoryType;
 }
 
-const char* memoryName(rhi::MemoryType memory) {
-    switch (memory) {
-    case rhi::MemoryType::GpuOnly:
-        return "GpuOnly";
-    case rhi::MemoryType::Upload:
-        return "Upload";
-    case rhi::MemoryType::Readback:
-        return "Readback";
-    }
-    return "?";
-}
-
 } // namespace
 
 Context::Context(const rhi::DeviceDesc& desc)
@@ -259,8 +247,8 @@ VkDeviceMemory Context::allocateMemory(const VkMemoryRequirements& requirements,
     if (type == kNoMemoryType) {
         type = findMemoryType(memoryProperties_, requirements.memoryTypeBits, minimum);
     }
-    const std::string context = std::to_string(requirements.size) + " bytes of " + memoryName(memory) +
-                                " memory for '" + std::string(debugName) + "'";
+    const std::string context = std::to_string(requirements.size) + " bytes of " +
+                                rhi::memoryTypeName(memory) + " memory for '" + std::string(debugName) + "'";
     if (type == kNoMemoryType) {
         throw rhi::Error("no Vulkan memory type fits " + context);
     }

@@ -10,18 +10,6 @@
 
 namespace lumina::vulkan {
 
-const char* queueName(rhi::QueueType type) {
-    switch (type) {
-    case rhi::QueueType::Graphics:
-        return "graphics";
-    case rhi::QueueType::Compute:
-        return "compute";
-    case rhi::QueueType::Copy:
-        return "copy";
-    }
-    return "?";
-}
-
 Queue::Queue(std::shared_ptr<Context> context, rhi::QueueType type, std::shared_ptr<HardwareQueue> hardware)
     : context_(std::move(context)), type_(type), hardware_(std::move(hardware)) {
     auto timelineInfo = vkStruct<VkSemaphoreTypeCreateInfo>(VK_STRUCTURE_TYPE_SEMAPHORE_TYPE_CREATE_INFO);
@@ -29,7 +17,7 @@ Queue::Queue(std::shared_ptr<Context> context, rhi::QueueType type, std::shared_
     timelineInfo.initialValue = 0;
     auto info = vkStruct<VkSemaphoreCreateInfo>(VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO);
     info.pNext = &timelineInfo;
-    const std::string name = std::string(queueName(type_)) + " queue timeline";
+    const std::string name = std::string(rhi::queueTypeName(type_)) + " queue timeline";
     check(vkCreateSemaphore(context_->device(), &info, nullptr, &timeline_), "vkCreateSemaphore", name);
     context_->setName(VK_OBJECT_TYPE_SEMAPHORE, timeline_, name);
 }
@@ -49,7 +37,7 @@ uint64_t Queue::submit(std::span<rhi::ICommandList* const> lists) {
     for (rhi::ICommandList* list : lists) {
         auto* vkList = dynamic_cast<CommandList*>(list);
         if (!vkList) {
-            throw rhi::Error(std::string("submit to the ") + queueName(type_) +
+            throw rhi::Error(std::string("submit to the ") + rhi::queueTypeName(type_) +
                              " queue: a command list of another backend");
         }
         vkList->checkSubmittable(*this);
@@ -75,7 +63,7 @@ uint64_t Queue::submit(std::span<rhi::ICommandList* const> lists) {
     {
         std::lock_guard hardwareLock(hardware_->submitMutex);
         check(vkQueueSubmit2(hardware_->queue, 1, &submit, VK_NULL_HANDLE), "vkQueueSubmit2",
-              std::string(queueName(type_)) + " queue, value " + std::to_string(value));
+              std::string(rhi::queueTypeName(type_)) + " queue, value " + std::to_string(value));
     }
     lastSubmitted_ = value;
     pendingWaits_.clear();
@@ -95,9 +83,9 @@ void Queue::waitForQueue(rhi::IQueue& other, uint64_t value) {
     }
     if (value > vkOther->lastSubmittedValue()) {
         // On a shared VkQueue this wait could never be satisfied: it would deadlock.
-        throw rhi::Error(std::string("waitForQueue: the ") + queueName(type_) +
+        throw rhi::Error(std::string("waitForQueue: the ") + rhi::queueTypeName(type_) +
                          " queue would wait for value " + std::to_string(value) + " of the " +
-                         queueName(other.type()) + " queue, which has submitted only " +
+                         rhi::queueTypeName(other.type()) + " queue, which has submitted only " +
                          std::to_string(vkOther->lastSubmittedValue()));
     }
     auto wait = vkStruct<VkSemaphoreSubmitInfo>(VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO);
@@ -113,23 +101,23 @@ void Queue::waitForQueue(rhi::IQueue& other, uint64_t value) {
 uint64_t Queue::completedValue() {
     uint64_t value = 0;
     check(vkGetSemaphoreCounterValue(context_->device(), timeline_, &value), "vkGetSemaphoreCounterValue",
-          std::string(queueName(type_)) + " queue");
+          std::string(rhi::queueTypeName(type_)) + " queue");
     return value;
 }
 
 void Queue::waitForValue(uint64_t value) {
     const uint64_t submitted = lastSubmittedValue();
     if (value > submitted) {
-        throw rhi::Error(std::string("waitForValue: the ") + queueName(type_) + " queue has submitted only " +
-                         std::to_string(submitted) + ", waiting for " + std::to_string(value) +
-                         " would never return");
+        throw rhi::Error(std::string("waitForValue: the ") + rhi::queueTypeName(type_) +
+                         " queue has submitted only " + std::to_string(submitted) + ", waiting for " +
+                         std::to_string(value) + " would never return");
     }
     auto info = vkStruct<VkSemaphoreWaitInfo>(VK_STRUCTURE_TYPE_SEMAPHORE_WAIT_INFO);
     info.semaphoreCount = 1;
     info.pSemaphores = &timeline_;
     info.pValues = &value;
     check(vkWaitSemaphores(context_->device(), &info, UINT64_MAX), "vkWaitSemaphores",
-          std::string(queueName(type_)) + " queue, value " + std::to_string(value));
+          std::string(rhi::queueTypeName(type_)) + " queue, value " + std::to_string(value));
 }
 
 void Queue::waitIdle() {

@@ -42,6 +42,4 @@ private:
     std::vector<VkSemaphoreSubmitInfo> pendingWaits_; // for the next submit
 };
 
-const char* queueName(rhi::QueueType type);
-
 } // namespace lumina::vulkan

@@ -1,5 +1,6 @@
 #include "rhi_vulkan/vk_sampler.h"
 
+#include "rhi/validation.h"
 #include "rhi_vulkan/vk_check.h"
 #include "rhi_vulkan/vk_context.h"
 #include "rhi_vulkan/vk_struct.h"
@@ -54,6 +55,7 @@ VkCompareOp toVkCompareOp(rhi::CompareOp op) {
 
 Sampler::Sampler(std::shared_ptr<Context> context, const rhi::SamplerDesc& desc)
     : context_(std::move(context)), desc_(desc) {
+    rhi::validateSamplerDesc(desc_);
     auto info = vkStruct<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
     info.magFilter = toVkFilter(desc_.magFilter);
     info.minFilter = toVkFilter(desc_.minFilter);

@@ -1,23 +1,18 @@
 #include "rhi_vulkan/vk_texture.h"
 
 #include "rhi/error.h"
+#include "rhi/validation.h"
 #include "rhi_vulkan/vk_check.h"
 #include "rhi_vulkan/vk_context.h"
 #include "rhi_vulkan/vk_format.h"
 #include "rhi_vulkan/vk_struct.h"
 
 #include <algorithm>
-#include <bit>
 #include <string>
 
 namespace lumina::vulkan {
 
 namespace {
-
-bool isCube(rhi::TextureDimension dimension) {
-    return dimension == rhi::TextureDimension::TextureCube ||
-           dimension == rhi::TextureDimension::TextureCubeArray;
-}
 
 VkImageUsageFlags usageFlags(rhi::TextureUsage usage) {
     using U = rhi::TextureUsage;
@@ -54,76 +49,16 @@ VkImageViewType viewType(rhi::TextureDimension dimension) {
     return VK_IMAGE_VIEW_TYPE_2D;
 }
 
-const char* dimensionName(rhi::TextureDimension dimension) {
-    switch (dimension) {
-    case rhi::TextureDimension::Texture2D:
-        return "Texture2D";
-    case rhi::TextureDimension::Texture2DArray:
-        return "Texture2DArray";
-    case rhi::TextureDimension::Texture3D:
-        return "Texture3D";
-    case rhi::TextureDimension::TextureCube:
-        return "TextureCube";
-    case rhi::TextureDimension::TextureCubeArray:
-        return "TextureCubeArray";
-    }
-    return "?";
-}
-
-// The description's mistakes, each named, before Vulkan sees them.
-void validate(const rhi::TextureDesc& desc) {
-    const std::string where = "createTexture '" + desc.debugName + "' (" + dimensionName(desc.dimension) +
-                              " " + std::string(rhi::formatInfo(desc.format).name) + "): ";
-    using U = rhi::TextureUsage;
-    if (desc.format == rhi::Format::Unknown) {
-        throw rhi::Error(where + "format is Unknown");
-    }
-    if (desc.width == 0 || desc.height == 0 || desc.depth == 0 || desc.arrayLayers == 0 ||
-        desc.mipLevels == 0) {
-        throw rhi::Error(where + "width, height, depth, arrayLayers and mipLevels must all be at least 1");
-    }
-    const uint32_t largest = std::max({desc.width, desc.height, desc.depth});
-    if (desc.mipLevels > std::bit_width(largest)) {
-        throw rhi::Error(where + std::to_string(desc.mipLevels) + " mips, but the full chain has only " +
-                         std::to_string(std::bit_width(largest)));
-    }
-    if (desc.dimension != rhi::TextureDimension::Texture3D && desc.depth != 1) {
-        throw rhi::Error(where + "depth must be 1 (use arrayLayers for layers)");
-    }
-    if (desc.dimension == rhi::TextureDimension::Texture3D && desc.arrayLayers != 1) {
-        throw rhi::Error(where + "a 3D texture has no array layers");
-    }
-    if (desc.dimension == rhi::TextureDimension::Texture2D && desc.arrayLayers != 1) {
-        throw rhi::Error(where + "a Texture2D has one layer; use Texture2DArray for " +
-                         std::to_string(desc.arrayLayers));
-    }
-    if (isCube(desc.dimension) && (desc.arrayLayers % 6 != 0 || desc.width != desc.height)) {
-        throw rhi::Error(where + "cube textures need square faces and 6 layers per cube, got " +
-                         std::to_string(desc.width) + "x" + std::to_string(desc.height) + " with " +
-                         std::to_string(desc.arrayLayers) + " layers");
-    }
-    if (desc.dimension == rhi::TextureDimension::TextureCube && desc.arrayLayers != 6) {
-        throw rhi::Error(where + "a TextureCube has exactly 6 layers (use TextureCubeArray)");
-    }
-    const bool depth = rhi::isDepthFormat(desc.format);
-    if (depth && (hasFlag(desc.usage, U::Storage) || hasFlag(desc.usage, U::RenderTarget))) {
-        throw rhi::Error(where + "depth formats cannot be storage or render-target textures");
-    }
-    if (!depth && hasFlag(desc.usage, U::DepthStencil)) {
-        throw rhi::Error(where + "DepthStencil usage needs a depth format");
-    }
-}
-
 } // namespace
 
 Texture::Texture(std::shared_ptr<Context> context, const rhi::TextureDesc& desc)
     : context_(std::move(context)), desc_(desc) {
-    validate(desc_);
+    rhi::validateTextureDesc(desc_);
     format_ = toVkFormat(desc_.format);
     const VkDevice device = context_->device();
 
     auto info = vkStruct<VkImageCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO);
-    info.flags = isCube(desc_.dimension) ? VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT : 0;
+    info.flags = rhi::isCubeDimension(desc_.dimension) ? VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT : 0;
     info.imageType =
         desc_.dimension == rhi::TextureDimension::Texture3D ? VK_IMAGE_TYPE_3D : VK_IMAGE_TYPE_2D;
     info.format = format_;
@@ -188,7 +123,7 @@ VkImageAspectFlags Texture::aspect() const {
 }
 
 uint32_t Texture::layerCount() const {
-    return desc_.dimension == rhi::TextureDimension::Texture3D ? 1 : desc_.arrayLayers;
+    return rhi::sliceLayerCount(desc_);
 }
 
 VkImageSubresourceRange Texture::fullRange() const {
@@ -196,9 +131,8 @@ VkImageSubresourceRange Texture::fullRange() const {
 }
 
 VkExtent3D Texture::mipExtent(uint32_t mip) const {
-    const bool is3D = desc_.dimension == rhi::TextureDimension::Texture3D;
-    return {rhi::mipExtent(desc_.width, mip), rhi::mipExtent(desc_.height, mip),
-            is3D ? rhi::mipExtent(desc_.depth, mip) : 1u};
+    const rhi::Extent3D extent = rhi::mipExtent(desc_, mip);
+    return {extent.width, extent.height, extent.depth};
 }
 
 VkImageView Texture::view(rhi::TextureDimension dimension, const rhi::TextureSubresources& sub) {
@@ -206,10 +140,10 @@ VkImageView Texture::view(rhi::TextureDimension dimension, const rhi::TextureSub
     const uint32_t mipCount =
         sub.mipCount ? sub.mipCount : desc_.mipLevels - std::min(sub.baseMip, desc_.mipLevels);
     const uint32_t layerCount = sub.layerCount ? sub.layerCount : layers - std::min(sub.baseLayer, layers);
-    const std::string where = "view of texture '" + desc_.debugName + "' as " + dimensionName(dimension) +
-                              " (mips " + std::to_string(sub.baseMip) + "+" + std::to_string(mipCount) +
-                              ", layers " + std::to_string(sub.baseLayer) + "+" + std::to_string(layerCount) +
-                              ")";
+    const std::string where = "view of texture '" + desc_.debugName + "' as " +
+                              rhi::textureDimensionName(dimension) + " (mips " + std::to_string(sub.baseMip) +
+                              "+" + std::to_string(mipCount) + ", layers " + std::to_string(sub.baseLayer) +
+                              "+" + std::to_string(layerCount) + ")";
     if (mipCount == 0 || sub.baseMip + mipCount > desc_.mipLevels || layerCount == 0 ||
         sub.baseLayer + layerCount > layers) {
         throw rhi::Error(where + ": outside the texture's " + std::to_string(desc_.mipLevels) + " mips and " +
@@ -222,8 +156,9 @@ VkImageView Texture::view(rhi::TextureDimension dimension, const rhi::TextureSub
     if (dimension == rhi::TextureDimension::Texture2D && layerCount != 1) {
         throw rhi::Error(where + ": a Texture2D view has exactly one layer");
     }
-    if (isCube(dimension) && (!isCube(desc_.dimension) || layerCount % 6 != 0 ||
-                              (dimension == rhi::TextureDimension::TextureCube && layerCount != 6))) {
+    if (rhi::isCubeDimension(dimension) &&
+        (!rhi::isCubeDimension(desc_.dimension) || layerCount % 6 != 0 ||
+         (dimension == rhi::TextureDimension::TextureCube && layerCount != 6))) {
         throw rhi::Error(where + ": cube views need a cube texture and 6 layers per cube");
     }
     if (dimension == rhi::TextureDimension::TextureCubeArray && !context_->features().imageCubeArray) {

@@ -5,6 +5,7 @@
 
 #include "app/command.h"
 #include "rhi/rhi.h"
+#include "shaders/common/constants_shared.h"
 
 namespace lumina::app {
 
@@ -22,8 +23,6 @@ uint32_t pcgHash(uint32_t value) {
     const uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
     return (word >> 22u) ^ word;
 }
-
-constexpr uint32_t kGroupSize = 64;
 
 int runGpuCheck(const ParsedArgs& args) {
     const auto count = static_cast<uint32_t>(args.getUint("count", 1u << 20, 1, 1u << 26));
@@ -49,7 +48,7 @@ int runGpuCheck(const ParsedArgs& args) {
     list->beginTimer("gpu check");
     list->setComputeState({pipeline, {{layout, {rhi::BindingSetItem::rwStructuredBuffer(0, output)}}}});
     list->pushConstants(GpuCheckConstants{count, seed, {0, 0}});
-    list->dispatch((count + kGroupSize - 1) / kGroupSize);
+    list->dispatch((count + LUMINA_LINEAR_GROUP_SIZE - 1) / LUMINA_LINEAR_GROUP_SIZE);
     list->endTimer();
     list->end();
     auto& queue = device->queue(rhi::QueueType::Graphics);

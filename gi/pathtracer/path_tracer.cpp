@@ -1,6 +1,7 @@
 #include "gi/pathtracer/path_tracer.h"
 
 #include "gi/core/camera.h"
+#include "shaders/common/constants_shared.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +12,7 @@ namespace lumina::gi {
 
 namespace {
 
-constexpr uint32_t kGroupSize = 8; // numthreads of pathtracer/path_trace
+constexpr uint32_t kGroupSize = LUMINA_SCREEN_GROUP_SIZE; // numthreads of pathtracer/path_trace
 // The relMSE regulariser of docs/measurement.md: relMSE = mean((x - r)^2 / (r^2 + 0.01)).
 constexpr double kRelativeErrorEpsilon = 0.01;
 

@@ -2,6 +2,7 @@
 
 #include "gi/image/exr.h"
 #include "gi/scene/scene_error.h"
+#include "shaders/common/constants_shared.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,8 +12,6 @@
 namespace lumina::scene {
 
 namespace {
-
-constexpr float kPi = 3.14159265358979f;
 
 std::string channelName(int c) {
     return c == 0 ? "R" : c == 1 ? "G" : "B";
@@ -81,8 +80,8 @@ SkyEnvironment readSkyEnvironment(const std::filesystem::path& file, float inten
 }
 
 glm::vec2 skyTexelCoordinates(const SkyEnvironment& sky, const glm::vec3& direction) {
-    const float u = 0.5f + std::atan2(direction.x, -direction.z) / (2.0f * kPi);
-    const float v = std::acos(std::clamp(direction.y, -1.0f, 1.0f)) / kPi;
+    const float u = 0.5f + std::atan2(direction.x, -direction.z) / (2.0f * LUMINA_PI);
+    const float v = std::acos(std::clamp(direction.y, -1.0f, 1.0f)) / LUMINA_PI;
     return {u * float(sky.width), v * float(sky.height)};
 }
 

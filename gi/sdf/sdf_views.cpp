@@ -2,6 +2,7 @@
 
 #include "gi/core/camera.h"
 #include "gi/image/colormap.h"
+#include "shaders/common/constants_shared.h"
 
 #include <cmath>
 #include <cstring>
@@ -15,7 +16,6 @@ namespace {
 constexpr uint32_t kFarMaxSteps = 128;
 // Darker level-set line every this many voxels of distance in the slice image.
 constexpr float kSliceLevelSpacingVoxels = 2.0f;
-constexpr uint32_t kGroupSize = 8; // numthreads(8, 8, 1) of sdf_camera_trace
 
 } // namespace
 
@@ -67,7 +67,7 @@ void SdfCameraTracer::record(gi::FrameContext& frame, const SceneSdf& sdfs, cons
         .constantBuffer(1, view_)
         .write(0, pixels_)
         .constants(constants)
-        .dispatchThreads(width_, height_, {kGroupSize, kGroupSize});
+        .dispatchThreads(width_, height_, {LUMINA_SCREEN_GROUP_SIZE, LUMINA_SCREEN_GROUP_SIZE});
 }
 
 image::Image SdfCameraTracer::readNormals(rhi::IDevice& device) const {

@@ -1,5 +1,7 @@
 #include "gi/surface_cache/radiosity_pass.h"
 
+#include "shaders/common/constants_shared.h"
+
 #include <glm/glm.hpp>
 #include <stdexcept>
 #include <string>
@@ -82,20 +84,23 @@ void RadiosityPass::record(gi::FrameContext& frame, const AtlasSurfaceBindings& 
         .read(11, voxels.volume())
         .read(13, sky_)
         .write(0, traced_)
-        .dispatchThreads(tiles.threadsX(probesPerTile), tiles.threadsY(probesPerTile), {64, 1});
+        .dispatchThreads(tiles.threadsX(probesPerTile), tiles.threadsY(probesPerTile),
+                         {LUMINA_LINEAR_GROUP_SIZE, 1});
 
     gi::ComputePass filter = frame.compute(kFilterPassName, "surface_cache/radiosity.filter");
     bindSurfaces(filter)
         .read(12, traced_)
         .write(0, filtered_)
-        .dispatchThreads(tiles.threadsX(probesPerTile), tiles.threadsY(probesPerTile), {64, 1});
+        .dispatchThreads(tiles.threadsX(probesPerTile), tiles.threadsY(probesPerTile),
+                         {LUMINA_LINEAR_GROUP_SIZE, 1});
 
     gi::ComputePass integrate = frame.compute(kIntegratePassName, "surface_cache/radiosity.integrate");
     bindSurfaces(integrate)
         .read(12, filtered_)
         .write(1, surfaces.atlas.indirect)
         .dispatchThreads(tiles.threadsX(LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE),
-                         tiles.threadsY(LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE), {64, 1});
+                         tiles.threadsY(LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE),
+                         {LUMINA_LINEAR_GROUP_SIZE, 1});
 }
 
 } // namespace lumina::surface_cache

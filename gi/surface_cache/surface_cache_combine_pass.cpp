@@ -1,5 +1,6 @@
 #include "gi/surface_cache/surface_cache_combine_pass.h"
 
+#include "shaders/common/constants_shared.h"
 #include "shaders/surface_cache/surface_cache_lighting_shared.h"
 
 namespace lumina::surface_cache {
@@ -20,7 +21,8 @@ void SurfaceCacheCombinePass::record(gi::FrameContext& frame, const SurfaceCache
         .read(4, tiles.buffer())
         .write(0, atlas.final)
         .dispatchThreads(tiles.threadsX(LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE),
-                         tiles.threadsY(LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE), {64, 1});
+                         tiles.threadsY(LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE),
+                         {LUMINA_LINEAR_GROUP_SIZE, 1});
 }
 
 } // namespace lumina::surface_cache

@@ -1,5 +1,6 @@
 #include "gi/surface_cache/surface_cache_direct_light_pass.h"
 
+#include "shaders/common/constants_shared.h"
 #include "shaders/surface_cache/surface_cache_lighting_shared.h"
 
 #include <stdexcept>
@@ -41,7 +42,8 @@ void SurfaceCacheDirectLightPass::record(gi::FrameContext& frame, const AtlasSur
         .read(7, tiles.buffer())
         .write(0, surfaces.atlas.direct)
         .dispatchThreads(tiles.threadsX(LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE),
-                         tiles.threadsY(LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE), {64, 1});
+                         tiles.threadsY(LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE),
+                         {LUMINA_LINEAR_GROUP_SIZE, 1});
 }
 
 } // namespace lumina::surface_cache

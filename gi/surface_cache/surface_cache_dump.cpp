@@ -3,19 +3,16 @@
 #include "gi/image/exr.h"
 #include "gi/image/png.h"
 #include "rhi/transfer.h"
+#include "shaders/common/constants_shared.h"
 #include "shaders/surface_cache/surface_cache_lighting_shared.h"
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <string>
 
 namespace lumina::surface_cache {
 
 namespace {
-
-constexpr float kShY00 = 0.282095f; // the SH basis constants radiosity.hlsl projects with
-constexpr float kShY1 = 0.488603f;
 
 image::Image texelImage(const std::vector<glm::vec4>& texels, uint32_t size, bool alpha) {
     image::Image out = alpha ? image::Image::rgba(size, size) : image::Image::rgb(size, size);
@@ -46,8 +43,7 @@ image::Rgb cardColour(uint32_t card) {
 
 float shIrradiance(const gpu::float4& sh, const glm::vec3& n) {
     const float l1 = sh.y * n.x + sh.z * n.y + sh.w * n.z;
-    return std::max(
-        float(std::numbers::pi) * kShY00 * sh.x + (2.0f * float(std::numbers::pi) / 3.0f) * kShY1 * l1, 0.0f);
+    return std::max(LUMINA_PI * LUMINA_SH_Y00 * sh.x + (2.0f * LUMINA_PI / 3.0f) * LUMINA_SH_Y1 * l1, 0.0f);
 }
 
 } // namespace

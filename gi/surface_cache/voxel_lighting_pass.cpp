@@ -1,5 +1,7 @@
 #include "gi/surface_cache/voxel_lighting_pass.h"
 
+#include "shaders/common/constants_shared.h"
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -72,12 +74,14 @@ void VoxelLightingPass::record(gi::FrameContext& frame, const AtlasSurfaceBindin
         .write(0, accumulator_)
         .write(1, volume_)
         .dispatchThreads(tiles.threadsX(LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE),
-                         tiles.threadsY(LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE), {64, 1});
+                         tiles.threadsY(LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE),
+                         {LUMINA_LINEAR_GROUP_SIZE, 1});
     frame.compute(kResolvePassName, "surface_cache/voxel_lighting.resolve")
         .constants(constants)
         .write(0, accumulator_)
         .write(1, volume_)
-        .dispatchThreads(grid_.dims.x * LUMINA_VOXEL_FACES, grid_.dims.y, grid_.dims.z, {4, 4, 4});
+        .dispatchThreads(grid_.dims.x * LUMINA_VOXEL_FACES, grid_.dims.y, grid_.dims.z,
+                         {LUMINA_VOLUME_GROUP_SIZE, LUMINA_VOLUME_GROUP_SIZE, LUMINA_VOLUME_GROUP_SIZE});
 }
 
 } // namespace lumina::surface_cache

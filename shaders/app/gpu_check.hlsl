@@ -2,6 +2,7 @@
 // `lumina gpu-check`: every thread writes a value the CPU can predict, proving that
 // kernels compile, bind, dispatch and read back on the chosen device.
 #include "common/bindings.hlsli"
+#include "common/constants_shared.h"
 
 struct GpuCheckConstants {
     uint count;
@@ -19,7 +20,7 @@ uint pcgHash(uint value) {
     return (word >> 22u) ^ word;
 }
 
-[numthreads(64, 1, 1)] void main(uint3 id : SV_DispatchThreadID) {
+[numthreads(LUMINA_LINEAR_GROUP_SIZE, 1, 1)] void main(uint3 id : SV_DispatchThreadID) {
     if (id.x < gConstants.count) {
         gOutput[id.x] = pcgHash(id.x ^ gConstants.seed);
     }

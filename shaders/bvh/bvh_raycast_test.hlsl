@@ -4,6 +4,7 @@
 #include "bvh/bvh_test_shared.h"
 #include "common/bindings.hlsli"
 #include "common/bvh_shared.h"
+#include "common/constants_shared.h"
 
 LUMINA_PUSH_CONSTANTS(BvhRaycastConstants, gConstants);
 
@@ -16,7 +17,7 @@ RWStructuredBuffer<BvhRayHit> gHits : register(u0);
 #define LUMINA_BVH_TRIANGLE(i) gBvhTriangles[i]
 #include "common/bvh_traversal.hlsli"
 
-[numthreads(64, 1, 1)] void main(uint3 id
+[numthreads(LUMINA_LINEAR_GROUP_SIZE, 1, 1)] void main(uint3 id
                                  : SV_DispatchThreadID) {
     if (id.x >= gConstants.rayCount) {
         return;

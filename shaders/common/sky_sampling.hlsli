@@ -10,8 +10,7 @@
 // zenith. Bilinear between texel centres with Load (RGBA32F need not be filterable, and no
 // sampler binding is needed): wrapping in longitude, clamped at the poles. gi/scene/
 // sky_environment.cpp does the same lookup on the CPU.
-
-#define LUMINA_SKY_PI 3.14159265359f
+#include "constants_shared.h"
 
 float3 skyTexel(int2 texel, int2 size) {
     texel.x = (texel.x % size.x + size.x) % size.x;
@@ -26,8 +25,8 @@ float3 skyRadiance(float3 direction) {
     if (size.x == 1u && size.y == 1u) {
         return LUMINA_SKY_TEXTURE.Load(int3(0, 0, 0)).rgb; // uniform: exactly its radiance
     }
-    float u = 0.5f + atan2(direction.x, -direction.z) / (2.0f * LUMINA_SKY_PI);
-    float v = acos(clamp(direction.y, -1.0f, 1.0f)) / LUMINA_SKY_PI;
+    float u = 0.5f + atan2(direction.x, -direction.z) / (2.0f * LUMINA_PI);
+    float v = acos(clamp(direction.y, -1.0f, 1.0f)) / LUMINA_PI;
     // size is cast to int only, and the float size comes from that int: vkd3d-shader merges two
     // casts of one value and then reads one as the other (docs/d3d12.md).
     int2 texels = int2(size);

@@ -35,7 +35,7 @@ float maxComponent(float3 v) {
         sum += w * gsRayData[r].rgb;
         weight += w;
     }
-    const float3 fresh = weight > 0.0 ? LUMINA_DDGI_PI * sum / weight : float3(0.0, 0.0, 0.0);
+    const float3 fresh = weight > 0.0 ? LUMINA_PI * sum / weight : float3(0.0, 0.0, 0.0);
 
     const uint2 tile =
         ddgiTileOrigin(gDdgi.volumes[texel.ref.volume], texel.ref.local, LUMINA_DDGI_IRRADIANCE_TILE);

@@ -7,6 +7,7 @@
 // octahedral tiles sit in the atlases at column p % (counts.x * counts.y) and row
 // volumes[v].atlas.y + p / (counts.x * counts.y): one row of tiles per z plane.
 #include "../common/shared_types.h"
+#include "../common/constants_shared.h"
 #include "../surface_cache/surface_cache_lighting_shared.h"
 
 #ifdef __cplusplus
@@ -22,7 +23,6 @@ inline float ddgi_frac(float x) {
 
 LUMINA_GPU_NAMESPACE_BEGIN
 
-#define LUMINA_DDGI_PI 3.14159265358979f
 #define LUMINA_DDGI_MAX_VOLUMES 4u
 // Interior texels per side of a probe's irradiance and distance tiles; each tile has a one-texel
 // border that repeats the interior across the octahedral seams (bilinear lookups never leave it).
@@ -35,9 +35,9 @@ LUMINA_GPU_NAMESPACE_BEGIN
 #define LUMINA_DDGI_FIXED_RAYS 32u
 #define LUMINA_DDGI_MAX_RAYS 256u
 // Threads of the per-probe trace and of the per-probe thread passes.
-#define LUMINA_DDGI_TRACE_GROUP 64u
-#define LUMINA_DDGI_PROBE_GROUP 64u
-#define LUMINA_DDGI_SAMPLE_GROUP 8u
+#define LUMINA_DDGI_TRACE_GROUP LUMINA_LINEAR_GROUP_SIZE
+#define LUMINA_DDGI_PROBE_GROUP LUMINA_LINEAR_GROUP_SIZE
+#define LUMINA_DDGI_SAMPLE_GROUP LUMINA_SCREEN_GROUP_SIZE
 
 // Irradiance is stored as E^(1 / LUMINA_DDGI_IRRADIANCE_GAMMA) in RGBA16F: a half float tops out
 // at 65504, which a point light's irradiance in millimetre scenes exceeds; the fifth root keeps
@@ -98,7 +98,7 @@ LUMINA_INLINE float3 ddgiFibonacciDirection(uint k, uint n) {
     const float goldenRatioFraction = 0.618033988749895f; // (sqrt(5) - 1) / 2
     const float z = 1.0f - (2.0f * float(k) + 1.0f) / float(n);
     const float r = sqrt(max(0.0f, 1.0f - z * z));
-    const float phi = 2.0f * LUMINA_DDGI_PI * LUMINA_DDGI_FRAC(float(k) * goldenRatioFraction);
+    const float phi = 2.0f * LUMINA_PI * LUMINA_DDGI_FRAC(float(k) * goldenRatioFraction);
     return float3(r * cos(phi), r * sin(phi), z);
 }
 

@@ -20,7 +20,7 @@ StructuredBuffer<float4> gDirections : register(t2);
 SamplerState gPoint : register(s0);
 RWStructuredBuffer<float4> gResults : register(u0); // x: hardware; y: face addressing; z: face
 
-[numthreads(64, 1, 1)]
+[numthreads(LUMINA_LINEAR_GROUP_SIZE, 1, 1)]
 void main(uint3 id : SV_DispatchThreadID) {
     if (id.x >= gConstants.count) {
         return;

@@ -3,12 +3,13 @@
 // Every constant and GPU struct the deferred renderer's kernels read (gi/deferred/ and
 // shaders/deferred/), in one header for C++ and HLSL (docs/deferred.md).
 #include "../common/camera_shared.h"
+#include "../common/constants_shared.h"
 #include "../common/lights_shared.h"
 
 LUMINA_GPU_NAMESPACE_BEGIN
 
 // Thread group edge of the full-screen compute passes (direct light, composite).
-#define LUMINA_DEFERRED_GROUP_SIZE 8
+#define LUMINA_DEFERRED_GROUP_SIZE LUMINA_SCREEN_GROUP_SIZE
 
 // Point and spot lights with a cube shadow map; any further ones light unshadowed.
 #define LUMINA_MAX_SHADOWED_LIGHTS 4

@@ -18,7 +18,6 @@ StructuredBuffer<DeferredLight> gLights : register(t6);
 Texture2D<float4> gSky : register(t7);
 LUMINA_UAV_FORMAT(rgba16f) RWTexture2D<float4> gDirect : register(u0);
 
-static const float kInvPi = 0.31830988618379067;
 
 #define LUMINA_SHADOW_CONSTANTS gShadow
 #define LUMINA_SUN_SHADOW_MAP gSunShadow
@@ -50,6 +49,6 @@ void main(uint3 id : SV_DispatchThreadID) {
             irradiance += sample.irradiance * (cosine * shadowVisibility(light, position, normal.xyz));
         }
     }
-    const float3 radiance = gMaterial.Load(pixel).rgb + albedo * kInvPi * irradiance;
+    const float3 radiance = gMaterial.Load(pixel).rgb + albedo * LUMINA_INV_PI * irradiance;
     gDirect[id.xy] = float4(radiance, 1.0);
 }

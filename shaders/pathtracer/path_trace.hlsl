@@ -9,6 +9,7 @@
 #include "common/bindings.hlsli"
 #include "common/bvh_shared.h"
 #include "common/camera_shared.h"
+#include "common/constants_shared.h"
 #include "common/conventions.h"
 #include "common/lights_shared.h"
 #include "common/scene_shared.h"
@@ -46,7 +47,6 @@ RWStructuredBuffer<PtPixelAovs> gAovs : register(u3);
 #define LUMINA_SKY_TEXTURE gSky
 #include "common/sky_sampling.hlsli"
 
-#define PT_GROUP_SIZE 8
 // Shadow rays towards a sampled emitter point stop this fraction short of it, so that they
 // never hit the emitting triangle itself (t is exact to a few ulps, far below this).
 #define PT_SHADOW_SHORTEN 0.9999f
@@ -99,7 +99,7 @@ void ptSamplePunctualLights(inout PathState path, uint bounces, float3 origin, f
         path.rays += 1u;
         if (!bvhTraceAny(origin, ls.direction, 0.0f, ls.distance)) {
             ptAddLight(path, bounces,
-                       path.throughput * albedo * LUMINA_PT_INV_PI * ls.irradiance * cosSurface);
+                       path.throughput * albedo * LUMINA_INV_PI * ls.irradiance * cosSurface);
         }
     }
 }
@@ -144,16 +144,16 @@ void ptSampleEmitter(inout PathState path, inout PtRng rng, uint bounces, float3
         return;
     }
     float lightPdf = ptEmitterSolidAnglePdf(e, distance, abs(cosFront));
-    float bsdfPdf = cosSurface * LUMINA_PT_INV_PI;
+    float bsdfPdf = cosSurface * LUMINA_INV_PI;
     float weight = ptPowerHeuristic(lightPdf, bsdfPdf);
     path.rays += 1u;
     if (!bvhTraceAny(origin, wi, 0.0f, distance * PT_SHADOW_SHORTEN)) {
         ptAddLight(path, bounces,
-                   path.throughput * albedo * LUMINA_PT_INV_PI * le * (cosSurface * weight / lightPdf));
+                   path.throughput * albedo * LUMINA_INV_PI * le * (cosSurface * weight / lightPdf));
     }
 }
 
-[numthreads(PT_GROUP_SIZE, PT_GROUP_SIZE, 1)] void main(uint3 id
+[numthreads(LUMINA_SCREEN_GROUP_SIZE, LUMINA_SCREEN_GROUP_SIZE, 1)] void main(uint3 id
                                                         : SV_DispatchThreadID) {
     uint2 pixel = uint2(gPass.tileX + id.x, gPass.tileY + id.y);
     uint width = gConstants.image.x;
@@ -229,7 +229,7 @@ void ptSampleEmitter(inout PathState path, inout PtRng rng, uint bounces, float3
         if (cosOut <= 0.0f || dot(ng, direction) <= 0.0f) {
             break; // below the geometric surface: the shading normal's hemisphere leaks here
         }
-        bsdfPdf = cosOut * LUMINA_PT_INV_PI;
+        bsdfPdf = cosOut * LUMINA_INV_PI;
         path.throughput *= albedo;
 
         // Russian roulette (pbrt-v4): survive with probability max(throughput) when below 1.

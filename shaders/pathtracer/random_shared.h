@@ -9,6 +9,7 @@
 // therefore depends only on the seed, the pixel and the sample index: not on the tile
 // size, the dispatch order or the number of samples per submission.
 #include "../common/shared_types.h"
+#include "../common/constants_shared.h"
 
 #ifdef __cplusplus
 namespace lumina::gpu {
@@ -19,8 +20,6 @@ using std::sin;
 
 LUMINA_GPU_NAMESPACE_BEGIN
 
-#define LUMINA_PT_PI 3.14159265358979f
-#define LUMINA_PT_INV_PI 0.318309886183791f
 // 2^-24: maps the top 24 bits of a 32-bit word to [0, 1) exactly.
 #define LUMINA_PT_UINT24_TO_UNIT 5.9604644775390625e-8f
 
@@ -55,7 +54,7 @@ LUMINA_INLINE float ptRngNext(LUMINA_INOUT(PtRng) rng) {
 // Cosine-weighted direction about +z (Malley's method): pdf = cos(theta) / pi.
 LUMINA_INLINE float3 ptSampleCosineHemisphere(float u1, float u2) {
     const float r = sqrt(u1);
-    const float phi = 2.0f * LUMINA_PT_PI * u2;
+    const float phi = 2.0f * LUMINA_PI * u2;
     return float3(r * cos(phi), r * sin(phi), sqrt(max(0.0f, 1.0f - u1)));
 }
 

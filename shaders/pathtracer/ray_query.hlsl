@@ -3,6 +3,7 @@
 // tests/pathtracer/bvh_brute_force_test.cpp: one thread per ray, writing t, barycentrics and
 // the traced triangle, then the surface's front normal and material.
 #include "common/bindings.hlsli"
+#include "common/constants_shared.h"
 #include "common/bvh_shared.h"
 #include "common/scene_shared.h"
 #include "pathtracer/pathtracer_shared.h"
@@ -23,7 +24,7 @@ RWStructuredBuffer<float4> gHits : register(u0); // two per ray
 #include "common/bvh_traversal.hlsli"
 #include "pathtracer/surface.hlsli"
 
-[numthreads(64, 1, 1)] void main(uint3 id
+[numthreads(LUMINA_LINEAR_GROUP_SIZE, 1, 1)] void main(uint3 id
                                  : SV_DispatchThreadID) {
     if (id.x >= gQuery.rayCount) {
         return;

@@ -3,6 +3,7 @@
 // 2D array read per layer, and a cube with 1x1 faces sampled along each face's axis (so the
 // face order, not the texel addressing, is what is checked).
 #include "common/bindings.hlsli"
+#include "common/constants_shared.h"
 #include "rhi_tests/rhi_tests_shared.h"
 
 ConstantBuffer<SampleConstants> gConstants : register(b0);
@@ -16,7 +17,7 @@ RWStructuredBuffer<SampleResult> gResults : register(u0);
 static const float3 kFaceAxes[6] = {float3(1, 0, 0), float3(-1, 0, 0), float3(0, 1, 0),
                                     float3(0, -1, 0), float3(0, 0, 1),  float3(0, 0, -1)};
 
-[numthreads(64, 1, 1)] void main(uint3 id : SV_DispatchThreadID) {
+[numthreads(LUMINA_LINEAR_GROUP_SIZE, 1, 1)] void main(uint3 id : SV_DispatchThreadID) {
     const uint probe = id.x;
     if (probe >= gConstants.count) {
         return;

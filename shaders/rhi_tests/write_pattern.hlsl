@@ -2,6 +2,7 @@
 // Every kind of compute binding at once: push constants, a constant buffer, a structured
 // input, structured and raw outputs and an rgba16f storage texture.
 #include "common/bindings.hlsli"
+#include "common/constants_shared.h"
 #include "rhi_tests/rhi_tests_shared.h"
 
 LUMINA_PUSH_CONSTANTS(WritePatternPush, gPush);
@@ -14,7 +15,7 @@ LUMINA_UAV_FORMAT(rgba16f) RWTexture2D<float4> gImage : register(u2);
 static const uint kRawStride = 4;
 static const uint kRawMultiplier = 7;
 
-[numthreads(64, 1, 1)] void main(uint3 id : SV_DispatchThreadID) {
+[numthreads(LUMINA_LINEAR_GROUP_SIZE, 1, 1)] void main(uint3 id : SV_DispatchThreadID) {
     const uint i = id.x;
     if (i < gPush.count) {
         PatternElement element;

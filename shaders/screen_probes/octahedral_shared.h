@@ -13,6 +13,7 @@
 // normalisation; d(omega) = dA_face * cos / |p|^2 = de / |p|^3 for the full map (its fold is
 // area preserving), and half that for the hemi map (its 45-degree turn halves the area).
 #include "../common/shared_types.h"
+#include "../common/constants_shared.h"
 #include "sh_shared.h"
 
 #ifdef __cplusplus
@@ -29,7 +30,6 @@ inline float sp_floor(float x) {
 
 LUMINA_GPU_NAMESPACE_BEGIN
 
-#define LUMINA_SP_PI 3.14159265358979f
 // Edge of a probe's hemi-octahedral radiance map: 64 texels, one per ray at the default 64 rays
 // (the thesis's 8 x 8).
 #define LUMINA_SP_OCT_SIZE 8u

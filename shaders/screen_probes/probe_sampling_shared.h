@@ -110,7 +110,7 @@ LUMINA_INLINE float hemiOctTexelCosineMass(uint x, uint y, uint n) {
         const float2 e = octTexelSample(x, y, n, q);
         sum += hemiOctJacobian(e) * hemiOctDecode(e).z;
     }
-    return sum * octTexelSampleArea(n) * (1.0f / LUMINA_SP_PI);
+    return sum * octTexelSampleArea(n) * (1.0f / LUMINA_PI);
 }
 
 struct SpTableSample {

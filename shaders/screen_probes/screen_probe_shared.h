@@ -3,6 +3,7 @@
 // Every constant and GPU struct of the screen-probe final gather (gi/screen_probes/,
 // shaders/screen_probes/, docs/screen_probes.md), for C++ and HLSL.
 #include "../common/camera_shared.h"
+#include "../common/constants_shared.h"
 #include "../common/sdf_scene_shared.h"
 #include "../surface_cache/surface_cache_lighting_shared.h"
 #include "octahedral_shared.h"
@@ -20,7 +21,7 @@ LUMINA_GPU_NAMESPACE_BEGIN
 // probe, each thread taking every 64th ray.
 #define LUMINA_SP_MAX_RAYS 256u
 // Thread-group edge of the full-resolution passes.
-#define LUMINA_SP_SCREEN_GROUP 8u
+#define LUMINA_SP_SCREEN_GROUP LUMINA_SCREEN_GROUP_SIZE
 
 // Cells (in world size at the probe's depth) a history probe may lie from the new one: the old
 // cell centre is up to half a cell's diagonal from where the surface reprojects, plus rounding.

@@ -10,6 +10,7 @@
 // radiance gives slightly negative irradiance on its far side, which shIrradiance clamps to 0
 // (docs/architecture.md, "Numerical hygiene": SH reconstruction clamps negatives).
 #include "../common/shared_types.h"
+#include "../common/constants_shared.h"
 
 LUMINA_GPU_NAMESPACE_BEGIN
 
@@ -21,29 +22,29 @@ LUMINA_GPU_NAMESPACE_BEGIN
 LUMINA_INLINE float shBasis(uint index, float3 d) {
     switch (index) {
     case 0u:
-        return 0.282094792f;
+        return LUMINA_SH_Y00;
     case 1u:
-        return 0.488602512f * d.y;
+        return LUMINA_SH_Y1 * d.y;
     case 2u:
-        return 0.488602512f * d.z;
+        return LUMINA_SH_Y1 * d.z;
     case 3u:
-        return 0.488602512f * d.x;
+        return LUMINA_SH_Y1 * d.x;
     case 4u:
-        return 1.092548431f * d.x * d.y;
+        return LUMINA_SH_Y2_XY * d.x * d.y;
     case 5u:
-        return 1.092548431f * d.y * d.z;
+        return LUMINA_SH_Y2_XY * d.y * d.z;
     case 6u:
-        return 0.315391565f * (3.0f * d.z * d.z - 1.0f);
+        return LUMINA_SH_Y20 * (3.0f * d.z * d.z - 1.0f);
     case 7u:
-        return 1.092548431f * d.x * d.z;
+        return LUMINA_SH_Y2_XY * d.x * d.z;
     default:
-        return 0.546274215f * (d.x * d.x - d.y * d.y);
+        return LUMINA_SH_Y22 * (d.x * d.x - d.y * d.y);
     }
 }
 
 // A_l of the clamped cosine for the band of coefficient `index`.
 LUMINA_INLINE float shCosineBand(uint index) {
-    return index == 0u ? 3.14159265358979f : (index < 4u ? 2.09439510239320f : 0.785398163397448f);
+    return index == 0u ? LUMINA_SH_COSINE_A0 : (index < 4u ? LUMINA_SH_COSINE_A1 : LUMINA_SH_COSINE_A2);
 }
 
 // Nine coefficients of one scalar function.

@@ -3,6 +3,7 @@
 // SDFs: the normal view of `lumina sdf --normals-png`, the golden images, and the trace
 // throughput benchmark. Writes, per pixel, the world normal mapped to [0, 1] (black on a
 // miss) and the hit distance.
+#include "common/constants_shared.h"
 #include "sdf/sdf_scene_bindings.hlsli"
 #include "sdf/sdf_scene_trace_shared.h"
 
@@ -10,7 +11,8 @@ LUMINA_PUSH_CONSTANTS(SdfCameraTraceConstants, gConstants);
 ConstantBuffer<SdfCameraView> gView : register(b1);
 RWStructuredBuffer<float4> gPixels : register(u0); // rgb: 0.5 * normal + 0.5, 0 on a miss; a: t
 
-[numthreads(8, 8, 1)] void main(uint3 id : SV_DispatchThreadID) {
+[numthreads(LUMINA_SCREEN_GROUP_SIZE, LUMINA_SCREEN_GROUP_SIZE, 1)]
+void main(uint3 id : SV_DispatchThreadID) {
     if (id.x >= gConstants.width || id.y >= gConstants.height) {
         return;
     }

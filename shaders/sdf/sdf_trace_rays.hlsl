@@ -2,6 +2,7 @@
 // Traces a buffer of world-space rays through the scene's SDFs with one part of the tracing
 // library (near field, far field or cone), one thread per ray: the kernel of the GPU tests
 // that hold the tracers against BVH ray casts and the CPU references.
+#include "common/constants_shared.h"
 #include "sdf/sdf_scene_bindings.hlsli"
 #include "sdf/sdf_scene_trace_shared.h"
 
@@ -9,7 +10,7 @@ LUMINA_PUSH_CONSTANTS(SdfTraceRaysConstants, gConstants);
 StructuredBuffer<BvhRay> gRays : register(t6); // unit directions; tMin in originAndTMin.w
 RWStructuredBuffer<SdfHit> gHits : register(u0);
 
-[numthreads(64, 1, 1)] void main(uint3 id : SV_DispatchThreadID) {
+[numthreads(LUMINA_LINEAR_GROUP_SIZE, 1, 1)] void main(uint3 id : SV_DispatchThreadID) {
     if (id.x >= gConstants.rayCount) {
         return;
     }

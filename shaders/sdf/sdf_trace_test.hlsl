@@ -2,6 +2,7 @@
 // Test kernel for GPU SDF sampling and sphere tracing (the GPU twin of
 // tests/sdf/sdf_trace_test.cpp): one thread per ray, traced through one volume of the atlas.
 #include "common/bindings.hlsli"
+#include "common/constants_shared.h"
 #include "common/bvh_shared.h"
 #include "common/sdf_shared.h"
 #include "sdf/sdf_test_shared.h"
@@ -19,7 +20,7 @@ RWStructuredBuffer<float4> gHits
 #define LUMINA_SDF_SAMPLER gLinearClamp
 #include "common/sdf_sampling.hlsli"
 
-[numthreads(64, 1, 1)] void main(uint3 id
+[numthreads(LUMINA_LINEAR_GROUP_SIZE, 1, 1)] void main(uint3 id
                                  : SV_DispatchThreadID) {
     if (id.x >= gConstants.rayCount) {
         return;

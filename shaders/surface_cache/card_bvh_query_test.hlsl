@@ -2,6 +2,7 @@
 // Test kernel for the card BVH (tests/surface_cache/card_bvh_gpu_test.cpp): one thread per
 // query, the owning card and its score written out for comparison with the CPU.
 #include "common/bindings.hlsli"
+#include "common/constants_shared.h"
 #include "surface_cache/card_bvh_shared.h"
 #include "surface_cache/card_bvh_test_shared.h"
 #include "surface_cache/surface_card_shared.h"
@@ -17,7 +18,7 @@ RWStructuredBuffer<CardBvhQueryResult> gResults : register(u0);
 #define LUMINA_SURFACE_CARD(i) gCards[i]
 #include "surface_cache/card_bvh_traversal.hlsli"
 
-[numthreads(64, 1, 1)] void main(uint3 id
+[numthreads(LUMINA_LINEAR_GROUP_SIZE, 1, 1)] void main(uint3 id
                                  : SV_DispatchThreadID) {
     if (id.x >= gConstants.queryCount) {
         return;

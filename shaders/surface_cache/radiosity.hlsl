@@ -15,6 +15,7 @@
 // uniform hemisphere of radiance L is exact (mean cos(theta) of the centres is 1/2, the phi
 // terms cancel), and its L1 irradiance at the probe's normal is exactly pi L, so a furnace
 // converges to its analytic value, not to an estimator's bias.
+#include "common/constants_shared.h"
 #include "sdf/sdf_scene_bindings.hlsli"
 #include "surface_cache/surface_cache_lighting_shared.h"
 #include "surface_cache/surface_card_shared.h"
@@ -44,9 +45,6 @@ LUMINA_UAV_FORMAT(rgba16f) RWTexture2D<float4> gIndirect : register(u1);
 // entering a corner (steps shrink with the distance), and in a closed room a ray that runs out
 // reads as a miss, which lost 2.5 % of the light in the furnace at rho = 0.8.
 #define LUMINA_RADIOSITY_MAX_STEPS 256u
-#define LUMINA_PI 3.14159265359f
-#define LUMINA_SH_Y00 0.282094792f // 1 / (2 sqrt(pi))
-#define LUMINA_SH_Y1 0.488602512f  // sqrt(3) / (2 sqrt(pi))
 // Golden-ratio step of the per-update rotation in phi: successive updates fill the circle evenly.
 #define LUMINA_GOLDEN_FRACTION 0.618033989f
 // Probe texels tried in order: the 2x2 centre of the 4x4 block first, then its border, so a
@@ -91,7 +89,7 @@ float3 finiteOrZero(float3 v) {
     return (any(isnan(v)) || any(isinf(v))) ? float3(0.0f, 0.0f, 0.0f) : v;
 }
 
-[numthreads(64, 1, 1)] void trace(uint3 id
+[numthreads(LUMINA_LINEAR_GROUP_SIZE, 1, 1)] void trace(uint3 id
                                   : SV_DispatchThreadID) {
     uint2 probe;
     if (!listedProbe(id.xy, probe)) {
@@ -188,7 +186,7 @@ float3 finiteOrZero(float3 v) {
     gProbesOut[probeIndex(probe)] = result;
 }
 
-    [numthreads(64, 1, 1)] void filter(uint3 id
+    [numthreads(LUMINA_LINEAR_GROUP_SIZE, 1, 1)] void filter(uint3 id
                                        : SV_DispatchThreadID) {
     uint2 probe;
     if (!listedProbe(id.xy, probe)) {
@@ -235,7 +233,7 @@ float shIrradiance(float4 sh, float3 n) {
                0.0f);
 }
 
-[numthreads(64, 1, 1)] void integrate(uint3 id
+[numthreads(LUMINA_LINEAR_GROUP_SIZE, 1, 1)] void integrate(uint3 id
                                       : SV_DispatchThreadID) {
     uint entry, item;
     if (!tileListItem(id.xy, gConstants.atlas.y, LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE, entry,

@@ -6,11 +6,10 @@
 // layer's rgb) is how emissive surfaces enter the GI. The final layer feeds the voxel lighting
 // and the next bounce, so nothing non-finite may reach it.
 #include "common/bindings.hlsli"
+#include "common/constants_shared.h"
 #include "surface_cache/surface_cache_lighting_shared.h"
 
 // Largest finite half: the final layer is RGBA16F, and an overflow would become +inf.
-#define LUMINA_HALF_MAX 65504.0f
-#define LUMINA_INV_PI 0.31830988618f
 
 LUMINA_PUSH_CONSTANTS(AtlasTileListConstants, gConstants);
 Texture2D<float4> gAlbedo : register(t0);
@@ -24,7 +23,7 @@ float3 finiteOrZero(float3 v) {
     return (any(isnan(v)) || any(isinf(v))) ? float3(0.0f, 0.0f, 0.0f) : v;
 }
 
-[numthreads(64, 1, 1)] void main(uint3 id
+[numthreads(LUMINA_LINEAR_GROUP_SIZE, 1, 1)] void main(uint3 id
                                  : SV_DispatchThreadID) {
     uint entry, item;
     if (!tileListItem(id.xy, gConstants.atlas.y, LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE, entry,

@@ -5,6 +5,7 @@
 // the cache and the screen agree. Irradiance, not radiance: combine applies albedo / pi. A
 // light is evaluated only where the card's light mask says it can reach.
 #include "common/bindings.hlsli"
+#include "common/constants_shared.h"
 #include "deferred/deferred_shared.h"
 #include "surface_cache/surface_cache_lighting_shared.h"
 #include "surface_cache/surface_card_shared.h"
@@ -31,13 +32,13 @@ LUMINA_UAV_FORMAT(rgba16f) RWTexture2D<float4> gDirect : register(u0);
 #include "surface_cache/surface_cache_texel.hlsli"
 
 // Largest finite half: the direct layer is RGBA16F.
-#define LUMINA_HALF_MAX 65504.0f
 
 bool cardSeesLight(SurfaceCard card, uint light) {
     return light < LUMINA_CARD_LIGHT_MASK_BITS && (card.lightMask[light / 32u] & (1u << (light % 32u))) != 0u;
 }
 
-[numthreads(64, 1, 1)] void main(uint3 id : SV_DispatchThreadID) {
+[numthreads(LUMINA_LINEAR_GROUP_SIZE, 1, 1)]
+void main(uint3 id : SV_DispatchThreadID) {
     uint entry, item;
     if (!tileListItem(id.xy, gConstants.atlas.y, LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE, entry, item)) {
         return;

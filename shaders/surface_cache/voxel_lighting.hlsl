@@ -13,6 +13,7 @@
 //   resolve: one thread per voxel face; rgb = weighted mean radiance of the texels it received,
 //            a = 1 where it received any (coverage, which the lookup weights by), then zeroes the
 //            accumulator for the next update.
+#include "common/constants_shared.h"
 #include "sdf/sdf_scene_bindings.hlsli"
 #include "surface_cache/surface_cache_lighting_shared.h"
 #include "surface_cache/surface_card_shared.h"
@@ -33,7 +34,7 @@ LUMINA_UAV_FORMAT(rgba16f) RWTexture3D<float4> gVoxels : register(u1);
 #define LUMINA_CAPTURE_DEPTH gCaptureDepth
 #include "surface_cache/surface_cache_texel.hlsli"
 
-[numthreads(64, 1, 1)] void inject(uint3 id
+[numthreads(LUMINA_LINEAR_GROUP_SIZE, 1, 1)] void inject(uint3 id
                                    : SV_DispatchThreadID) {
     uint entry, item;
     if (!tileListItem(id.xy, gConstants.atlas.y, LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE, entry,
@@ -77,8 +78,8 @@ LUMINA_UAV_FORMAT(rgba16f) RWTexture3D<float4> gVoxels : register(u1);
     }
 }
 
-    [numthreads(4, 4, 4)] void resolve(uint3 id
-                                       : SV_DispatchThreadID) {
+[numthreads(LUMINA_VOLUME_GROUP_SIZE, LUMINA_VOLUME_GROUP_SIZE, LUMINA_VOLUME_GROUP_SIZE)]
+void resolve(uint3 id : SV_DispatchThreadID) {
     // id.x runs over the faces' side-by-side columns.
     uint3 dims = uint3(LUMINA_VOXEL_FACES * gConstants.grid.dims.x, gConstants.grid.dims.yz);
     if (any(id >= dims)) {

@@ -4,6 +4,7 @@
 // ImGui's triangles and the frame itself, and the visualise kernel that turns any intermediate
 // buffer into a display image. (Include guard, not #pragma once: glslang ignores the pragma.)
 #include "../common/shared_types.h"
+#include "../common/constants_shared.h"
 
 LUMINA_GPU_NAMESPACE_BEGIN
 
@@ -27,7 +28,7 @@ LUMINA_STATIC_ASSERT_SIZE(UiConstants, 32);
 #define LUMINA_VISUALISE_ALPHA 4u    // the alpha channel as grey
 #define LUMINA_VISUALISE_ID 5u       // the first channel as an integer id: a colour per id
 
-#define LUMINA_VISUALISE_GROUP_SIZE 8
+#define LUMINA_VISUALISE_GROUP_SIZE LUMINA_SCREEN_GROUP_SIZE
 
 // Slice views (the global SDF, the voxel lighting) cut the volume at a world position along
 // one axis; the image spans the other two axes, the next one across and the one after up

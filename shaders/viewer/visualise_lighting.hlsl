@@ -9,14 +9,12 @@
 //                    -y, -z) side by side, nearest voxel; rgb radiance where a face holds light
 //                    (coverage above 0), dark grey where it is empty.
 #include "viewer/visualise_common.hlsli"
+#include "common/constants_shared.h"
 #include "surface_cache/surface_cache_lighting_shared.h"
 
 StructuredBuffer<RadiosityProbe> gProbes : register(t0);
 Texture3D<float4> gVoxelLighting : register(t1); // LUMINA_VOXEL_FACES columns of slice.z voxels along x
 
-#define LUMINA_PI 3.14159265359
-#define LUMINA_SH_Y00 0.282094792 // 1 / (2 sqrt(pi))
-#define LUMINA_SH_Y1 0.488602512  // sqrt(3) / (2 sqrt(pi))
 // Empty voxel faces, told apart from faces that hold no light.
 #define LUMINA_EMPTY_VOXEL 0.08
 

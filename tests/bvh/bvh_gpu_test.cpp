@@ -2,6 +2,7 @@
 // shaders/bvh/bvh_raycast_test.hlsl) against the CPU traversal on the same tree and rays.
 #include "gi/bvh/bvh_query.h"
 #include "shaders/bvh/bvh_test_shared.h"
+#include "shaders/common/constants_shared.h"
 #include "tests/bvh/test_meshes.h"
 #include "tests/rhi/gpu_test_fixture.h"
 
@@ -12,7 +13,7 @@ namespace {
 
 using BvhGpuTest = GpuTest;
 
-constexpr uint32_t kGroupSize = 64; // numthreads of bvh_raycast_test
+constexpr uint32_t kGroupSize = LUMINA_LINEAR_GROUP_SIZE; // numthreads of bvh_raycast_test
 
 std::vector<gpu::BvhRay> makeRays(uint32_t count, uint32_t seed) {
     std::mt19937 rng(seed);

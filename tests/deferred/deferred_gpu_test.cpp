@@ -6,6 +6,7 @@
 #include "gi/image/exr.h"
 #include "gi/scene/mesh_builder.h"
 #include "gi/scene/scene_loader.h"
+#include "shaders/common/constants_shared.h"
 #include "tests/deferred/deferred_harness.h"
 #include "tests/rhi/gpu_test_fixture.h"
 
@@ -298,7 +299,7 @@ TEST_P(DeferredGpuTest, PointShadowMapsFollowTheApiCubeConvention) {
         .read(2, directionBuffer)
         .sampler(0, point)
         .write(0, results)
-        .dispatchThreads(kCount, 1, 1, {64, 1, 1});
+        .dispatchThreads(kCount, 1, 1, {LUMINA_LINEAR_GROUP_SIZE, 1, 1});
     list->end();
     submitAndWait(*list);
     const auto values = readBack<gpu::float4>(*results);

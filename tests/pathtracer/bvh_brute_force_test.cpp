@@ -7,6 +7,7 @@
 #include "gi/core/frame_context.h"
 #include "gi/scene/scene_loader.h"
 #include "shaders/common/bvh_shared.h"
+#include "shaders/common/constants_shared.h"
 #include "shaders/common/ray_triangle.hlsli"
 #include "tests/bvh/test_meshes.h"
 #include "tests/pathtracer/path_tracer_fixture.h"
@@ -22,7 +23,7 @@ namespace {
 using BvhBruteForceTest = PathTracerTest;
 
 constexpr uint32_t kRays = 2048;
-constexpr uint32_t kGroupSize = 64; // numthreads of pathtracer/ray_query
+constexpr uint32_t kGroupSize = LUMINA_LINEAR_GROUP_SIZE; // numthreads of pathtracer/ray_query
 
 // The Cornell box plus instances of an icosphere: rotated, stretched, two of them mirrored.
 scene::Scene makeScene() {

@@ -1,4 +1,5 @@
 // The compute queue waits on the graphics queue (waitForQueue) and reads what it wrote.
+#include "shaders/common/constants_shared.h"
 #include "shaders/rhi_tests/rhi_tests_shared.h"
 #include "tests/rhi/gpu_test_fixture.h"
 
@@ -12,7 +13,7 @@ using gpu::ChainConstants;
 
 TEST_P(AsyncComputeTest, ComputeQueueReadsWhatTheGraphicsQueueWrote) {
     LUMINA_REQUIRE_KERNELS();
-    constexpr uint32_t kCount = 2048, kGroupSize = 64;
+    constexpr uint32_t kCount = 2048, kGroupSize = LUMINA_LINEAR_GROUP_SIZE;
     const ComputeKernel seed =
         loadComputeKernel("rhi_tests/chain_seed", {{rhi::BindingType::BufferUAV, 0}}, sizeof(ChainConstants));
     const ComputeKernel step = loadComputeKernel(

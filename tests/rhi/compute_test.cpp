@@ -1,5 +1,6 @@
 // Compute: every binding kind in one kernel, barrier chains across passes, UAV -> UAV chains
 // on one buffer, indirect dispatch, and the state tracker's SRV + UAV conflict.
+#include "shaders/common/constants_shared.h"
 #include "shaders/rhi_tests/rhi_tests_shared.h"
 #include "tests/rhi/gpu_test_fixture.h"
 #include "tests/rhi/texel_patterns.h"
@@ -12,7 +13,7 @@ namespace {
 using ComputeTest = GpuTest;
 using gpu::ChainConstants;
 
-constexpr uint32_t kGroupSize = 64; // numthreads of the chain kernels
+constexpr uint32_t kGroupSize = LUMINA_LINEAR_GROUP_SIZE; // numthreads of the chain kernels
 uint32_t groupsFor(uint32_t count) {
     return (count + kGroupSize - 1) / kGroupSize;
 }

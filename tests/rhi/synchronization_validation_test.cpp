@@ -1,6 +1,7 @@
 // THE DELIBERATE-ERROR TEST: with automatic barriers off, a dispatch writes a buffer and the
 // next one reads it with no barrier in between. Synchronization validation must catch it.
 // If this test fails, the other GPU tests' "no validation messages" proves nothing.
+#include "shaders/common/constants_shared.h"
 #include "shaders/rhi_tests/rhi_tests_shared.h"
 #include "tests/rhi/gpu_test_fixture.h"
 
@@ -10,7 +11,7 @@ namespace {
 using SynchronizationValidationTest = GpuTest;
 using gpu::ChainConstants;
 
-constexpr uint32_t kCount = 256, kGroupSize = 64;
+constexpr uint32_t kCount = 256, kGroupSize = LUMINA_LINEAR_GROUP_SIZE;
 
 TEST_P(SynchronizationValidationTest, MissingBarrierBetweenDispatchesIsReported) {
     if (GetParam() == rhi::Api::D3D12) {

@@ -52,22 +52,6 @@ std::vector<uint8_t> texelPattern(rhi::Format format, size_t texels, uint32_t se
     return bytes;
 }
 
-std::string dimensionName(rhi::TextureDimension dimension) {
-    switch (dimension) {
-    case rhi::TextureDimension::Texture2D:
-        return "Texture2D";
-    case rhi::TextureDimension::Texture2DArray:
-        return "Texture2DArray";
-    case rhi::TextureDimension::Texture3D:
-        return "Texture3D";
-    case rhi::TextureDimension::TextureCube:
-        return "TextureCube";
-    case rhi::TextureDimension::TextureCubeArray:
-        return "TextureCubeArray";
-    }
-    return "Unknown";
-}
-
 uint16_t floatToHalf(float value) {
     const uint32_t bits = std::bit_cast<uint32_t>(value);
     const uint32_t sign = (bits >> 16) & 0x8000;

@@ -13,8 +13,6 @@ namespace lumina::test {
 
 std::vector<uint8_t> texelPattern(rhi::Format format, size_t texels, uint32_t seed);
 
-std::string dimensionName(rhi::TextureDimension dimension);
-
 // IEEE half-float bits of a float (round to nearest even), for expectations on 16F targets.
 uint16_t floatToHalf(float value);
 float halfToFloat(uint16_t bits);

@@ -17,7 +17,7 @@ using Param = std::tuple<rhi::Api, rhi::Format, rhi::TextureDimension>;
 
 namespace lumina::rhi {
 inline void PrintTo(TextureDimension dimension, std::ostream* out) {
-    *out << test::dimensionName(dimension);
+    *out << textureDimensionName(dimension);
 }
 } // namespace lumina::rhi
 
@@ -53,12 +53,9 @@ rhi::TextureDesc descFor(rhi::Format format, rhi::TextureDimension dimension) {
         desc.width = desc.height = 4, desc.arrayLayers = 12;
         break;
     }
-    desc.debugName = std::string(rhi::formatInfo(format).name) + " " + dimensionName(dimension);
+    desc.debugName = std::string(rhi::formatInfo(format).name) + " " + rhi::textureDimensionName(dimension);
     return desc;
 }
-
-// D3D12 places texture data in buffers at 512-byte boundaries; the tests keep to that.
-constexpr uint64_t kPlacementAlignment = 512;
 
 TEST_P(TextureFormatTest, UploadAndReadBackEveryLayerAndMip) {
     const auto [api, format, dimension] = GetParam();
@@ -73,8 +70,9 @@ TEST_P(TextureFormatTest, UploadAndReadBackEveryLayerAndMip) {
     const uint32_t mip1Depth =
         dimension == rhi::TextureDimension::Texture3D ? rhi::mipExtent(desc.depth, 1) : 1;
     const uint32_t pitch = rhi::alignedRowPitch(mip1Width, format);
-    const uint64_t layerBytes = (uint64_t(pitch) * mip1Height * mip1Depth + kPlacementAlignment - 1) /
-                                kPlacementAlignment * kPlacementAlignment;
+    const uint64_t layerBytes =
+        (uint64_t(pitch) * mip1Height * mip1Depth + rhi::kTextureCopyOffsetAlignment - 1) /
+        rhi::kTextureCopyOffsetAlignment * rhi::kTextureCopyOffsetAlignment;
     rhi::BufferHandle staging = device().createBuffer({.size = layerBytes * desc.arrayLayers,
                                                        .memory = rhi::MemoryType::Upload,
                                                        .debugName = "mip 1 staging"});
@@ -126,7 +124,7 @@ std::vector<rhi::Format> allFormats() {
 std::string paramName(const ::testing::TestParamInfo<Param>& info) {
     const auto [api, format, dimension] = info.param;
     return std::string(rhi::apiName(api)) + "_" + std::string(rhi::formatInfo(format).name) + "_" +
-           dimensionName(dimension);
+           rhi::textureDimensionName(dimension);
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, TextureFormatTest,

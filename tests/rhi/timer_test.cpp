@@ -1,4 +1,5 @@
 // GPU timers and debug markers.
+#include "shaders/common/constants_shared.h"
 #include "shaders/rhi_tests/rhi_tests_shared.h"
 #include "tests/rhi/gpu_test_fixture.h"
 
@@ -10,7 +11,7 @@ namespace {
 using TimerTest = GpuTest;
 using gpu::ChainConstants;
 
-constexpr uint32_t kCount = 4096, kGroupSize = 64;
+constexpr uint32_t kCount = 4096, kGroupSize = LUMINA_LINEAR_GROUP_SIZE;
 
 TEST_P(TimerTest, RegionsAreNamedNonZeroAndOrdered) {
     LUMINA_REQUIRE_KERNELS();

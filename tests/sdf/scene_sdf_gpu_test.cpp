@@ -6,6 +6,7 @@
 #include "gi/core/frame_context.h"
 #include "gi/core/pipeline_cache.h"
 #include "gi/sdf/sdf_views.h"
+#include "shaders/common/constants_shared.h"
 #include "shaders/sdf/sdf_scene_trace_shared.h"
 #include "tests/rhi/gpu_test_fixture.h"
 #include "tests/sdf/sdf_scene_util.h"
@@ -18,7 +19,7 @@
 namespace lumina::test {
 namespace {
 
-constexpr uint32_t kRayGroupSize = 64; // numthreads of sdf_trace_rays
+constexpr uint32_t kRayGroupSize = LUMINA_LINEAR_GROUP_SIZE; // numthreads of sdf_trace_rays
 
 class SceneSdfGpuTest : public GpuTest {
 protected:

@@ -3,6 +3,7 @@
 // Hardware trilinear weights have 8 fractional bits, so values differ by up to a few
 // thousandths of a voxel and a sphere trace may stop a step apart.
 #include "gi/sdf/sdf_trace.h"
+#include "shaders/common/constants_shared.h"
 #include "shaders/sdf/sdf_test_shared.h"
 #include "tests/bvh/test_meshes.h"
 #include "tests/rhi/gpu_test_fixture.h"
@@ -14,7 +15,7 @@ namespace {
 
 using SdfGpuTest = GpuTest;
 
-constexpr uint32_t kGroupSize = 64; // numthreads of sdf_trace_test
+constexpr uint32_t kGroupSize = LUMINA_LINEAR_GROUP_SIZE; // numthreads of sdf_trace_test
 
 TEST_P(SdfGpuTest, SphereTracingMatchesTheCpu) {
     // Two meshes in one atlas; the second (a box) is traced, so its atlas offset is non-zero.

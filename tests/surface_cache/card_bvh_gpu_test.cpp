@@ -4,6 +4,7 @@
 #include "gi/scene/scene_loader.h"
 #include "gi/surface_cache/card_bvh.h"
 #include "gi/surface_cache/surface_cards.h"
+#include "shaders/common/constants_shared.h"
 #include "shaders/surface_cache/card_bvh_test_shared.h"
 #include "tests/rhi/gpu_test_fixture.h"
 #include "tests/surface_cache/random_cards.h"
@@ -14,7 +15,7 @@ namespace {
 
 using namespace lumina::surface_cache;
 
-constexpr uint32_t kGroupSize = 64; // numthreads of card_bvh_query_test
+constexpr uint32_t kGroupSize = LUMINA_LINEAR_GROUP_SIZE; // numthreads of card_bvh_query_test
 
 class SurfaceCacheCardBvhGpu : public GpuTest {
 protected:
