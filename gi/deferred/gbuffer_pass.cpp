@@ -27,8 +27,8 @@ GBuffer GBuffer::create(rhi::IDevice& device, uint32_t width, uint32_t height) {
 GBufferPass::GBufferPass(const scene::Scene& scene, const GpuScene& gpuScene)
     : gpuScene_(gpuScene), groups_(gbufferDrawGroups(scene, gpuScene.draws())) {}
 
-void GBufferPass::record(FrameContext& frame, const GBuffer& gbuffer,
-                         const rhi::BufferHandle& frameConstants) const {
+void GBufferPass::record(FrameContext& frame, const GBuffer& gbuffer, const rhi::BufferHandle& frameConstants,
+                         std::string_view passName) const {
     rhi::ICommandList& commands = frame.commands();
     for (const rhi::TextureHandle& target :
          {gbuffer.albedo, gbuffer.normal, gbuffer.material, gbuffer.position}) {
@@ -40,7 +40,7 @@ void GBufferPass::record(FrameContext& frame, const GBuffer& gbuffer,
         RasterPipelineState state;
         state.raster.cullMode = group.cull;
         state.depth = {.testEnable = true, .writeEnable = true, .compareOp = rhi::CompareOp::Less};
-        frame.raster("gbuffer", "deferred/gbuffer.vsMain", "deferred/gbuffer.psMain")
+        frame.raster(passName, "deferred/gbuffer.vsMain", "deferred/gbuffer.psMain")
             .state(state)
             .constantBuffer(0, frameConstants)
             .read(0, gpuScene_.vertices)

@@ -26,7 +26,9 @@ public:
     GBufferPass(const scene::Scene& scene, const GpuScene& gpuScene);
 
     // Clears the targets and draws every instance; frameConstants holds DeferredFrameConstants.
-    void record(FrameContext& frame, const GBuffer& gbuffer, const rhi::BufferHandle& frameConstants) const;
+    // Timed as `passName` (another view of the scene, a probe's cube face, times apart).
+    void record(FrameContext& frame, const GBuffer& gbuffer, const rhi::BufferHandle& frameConstants,
+                std::string_view passName = "gbuffer") const;
 
 private:
     const GpuScene& gpuScene_;
