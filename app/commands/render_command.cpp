@@ -251,7 +251,10 @@ int runRender(const ParsedArgs& args) {
         }
         if (withGi && (rendered % 16 == 0 || rendered == frames)) {
             std::cerr << "frame " << rendered << (converge ? "" : "/" + std::to_string(frames))
-                      << (settledAt ? ": surface cache converged" : ": surface cache converging") << '\n';
+                      << (shGrid      ? (settledAt ? ": sh grid baked" : ": sh grid baking")
+                          : settledAt ? ": surface cache converged"
+                                      : ": surface cache converging")
+                      << '\n';
         }
         if (converge && settledAt != 0 && rendered >= settledAt + settleFrames) {
             break;

@@ -10,7 +10,7 @@ std::vector<FlagSpec> withShGridFlags(std::vector<FlagSpec> flags) {
         {{"sh-grid-probes", "N",
           "SH grid probes along the scene's largest side, 2..64 (overrides the preset: 4 low, 6 "
           "medium, 8 high)"},
-         {"sh-grid-face", "N", "SH grid cube-face size in texels, 8..512 (preset: 16, 32, 64)"},
+         {"sh-grid-face", "N", "SH grid cube-face size in texels, 8..512 (preset: 32, 64, 128)"},
          {"sh-grid-budget", "N", "SH grid probes baked per frame at most, 1..256 (preset: 8, 16, 32)"},
          {"sh-grid-window", "W",
           "Hann window over the SH bands against ringing, width W > 2 bands (default 0: off)"},

@@ -25,7 +25,7 @@ constexpr Preset kPresets[] = {
      .ddgiProbesPerAxis = 8,
      .ddgiRaysPerProbe = 96,
      .shGridProbesPerAxis = 4,
-     .shGridFaceSize = 16,
+     .shGridFaceSize = 32,
      .shGridProbesPerFrame = 8},
     {.name = "medium",
      .sunShadowSize = 2048,
@@ -40,7 +40,7 @@ constexpr Preset kPresets[] = {
      .ddgiProbesPerAxis = 16,
      .ddgiRaysPerProbe = 144,
      .shGridProbesPerAxis = 6,
-     .shGridFaceSize = 32,
+     .shGridFaceSize = 64,
      .shGridProbesPerFrame = 16},
     {.name = "high",
      .sunShadowSize = 4096,
@@ -55,7 +55,7 @@ constexpr Preset kPresets[] = {
      .ddgiProbesPerAxis = 16,
      .ddgiRaysPerProbe = 256,
      .shGridProbesPerAxis = 8,
-     .shGridFaceSize = 64,
+     .shGridFaceSize = 128,
      .shGridProbesPerFrame = 32},
 };
 
