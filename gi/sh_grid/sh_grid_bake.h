@@ -42,6 +42,9 @@ public:
     void record(FrameContext& frame, const DeferredRenderer& deferred, const ShGridResources& r,
                 std::span<const uint32_t> probes);
 
+    // The radiance of the last face baked (its -z face of the last probe): a debug view.
+    const rhi::TextureHandle& lastFaceRadiance() const { return radiance_; }
+
 private:
     uint32_t faceSize_;
     bool bounce_;

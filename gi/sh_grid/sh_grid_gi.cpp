@@ -96,7 +96,8 @@ std::vector<GiMemoryPart> ShGridGi::memory() const {
 }
 
 std::vector<GiDebugTexture> ShGridGi::debugTextures() const {
-    return {{"sh grid: irradiance E", resources_.sampled, 1.0f}};
+    return {{"sh grid: irradiance E", resources_.sampled, 1.0f},
+            {"sh grid: last baked cube face (radiance)", bake_.lastFaceRadiance(), 1.0f}};
 }
 
 ShGridFile ShGridGi::readGrid(rhi::IDevice& device) const {
