@@ -1,5 +1,5 @@
 #pragma once
-// Loads compiled kernels by name ("rhi_tests/fill_pattern", "deferred/gbuffer.vsMain") from
+// Loads compiled kernels by name ("rhi_tests/fill_pattern", "deferred/gbuffer_visibility.vsMain") from
 // the build's shader folder, in the bytecode format the device takes, and caches them.
 // Each kernel picks its own file: SPIR-V on Vulkan; on D3D12 DXIL where the device has shader
 // model 6 and the build made DXIL, else DXBC (docs/d3d12.md).

@@ -1,5 +1,5 @@
 // `lumina bench`: the run-time-against-error matrix. For every scene it renders (or reuses) a
-// path-traced reference, then runs each technique (direct, lumen, ddgi, pathtracer) at each quality
+// path-traced reference, then runs each technique (direct, lumen, ddgi, sh-grid, pathtracer) at each quality
 // preset for a fixed number of frames, timing every pass on the GPU and measuring the image
 // against the reference at frame 1 and after convergence. Writes bench.csv, bench.json and a
 // log-log plot of error against frame time (scripts/plot_bench.py, python3-matplotlib).
@@ -171,9 +171,9 @@ int runBench(const ParsedArgs& args) {
         budgets.push_back(budget);
     }
     for (const std::string& technique : techniques) {
-        if (!contains({"direct", "lumen", "ddgi", "pathtracer"}, technique)) {
+        if (!contains({"direct", "lumen", "ddgi", "sh-grid", "pathtracer"}, technique)) {
             throw UsageError("--techniques: unknown technique '" + technique +
-                             "' (direct, lumen, ddgi, pathtracer)");
+                             "' (direct, lumen, ddgi, sh-grid, pathtracer)");
         }
     }
     for (const std::string& preset : presets) {
@@ -305,7 +305,7 @@ Command benchCommand() {
         .name = "bench",
         .summary = "time every technique and preset and measure its error against the path tracer",
         .usage =
-            "lumina bench [--scenes A,B] [--techniques direct,lumen,ddgi,pathtracer] [--presets "
+            "lumina bench [--scenes A,B] [--techniques direct,lumen,ddgi,sh-grid,pathtracer] [--presets "
             "low,medium,high] "
             "[--pt-budgets 1,4,16] [--size WxH] [--frames N] [--reference-spp N] [--cache DIR] [--out DIR] "
             "[--no-default-light] [--sky FILE.exr [--sky-intensity K]]",
@@ -315,7 +315,9 @@ Command benchCommand() {
             "scene, size, samples and seed), then runs each technique at each preset for --frames frames "
             "(default 16) at --size (default 128x128). direct is the deferred renderer (presets set its "
             "shadow-map sizes); lumen adds the lumen GI (SDFs, surface cache, screen probes), ddgi the DDGI "
-            "probe volumes on the same SDFs and surface cache (docs/ddgi.md; presets are "
+            "probe volumes on the same SDFs and surface cache (docs/ddgi.md), sh-grid the SH probe grid "
+            "baked "
+            "from raster cube maps (docs/sh_grid.md; presets are "
             "the one table of docs/gi.md, shadow maps included); the path tracer accumulates across frames "
             "with "
             "per-frame budgets in multiples of a real-time frame: lumen's median frame when lumen runs, else "
@@ -335,7 +337,7 @@ Command benchCommand() {
         .flags = withSceneLoadFlags(
             {{"scenes", "LIST",
               "comma-separated scenes (default cornell_box,cornell_box_point,open_top_box)"},
-             {"techniques", "LIST", "direct, lumen, ddgi, pathtracer (default direct,pathtracer)"},
+             {"techniques", "LIST", "direct, lumen, ddgi, sh-grid, pathtracer (default direct,pathtracer)"},
              {"presets", "LIST", "presets of direct and lumen: low, medium, high (default all)"},
              {"pt-budgets", "LIST",
               "path-tracer frame budgets in multiples of lumen's frame, else direct's (default 1,4,16)"},

@@ -1,11 +1,11 @@
 // `lumina gpu-check`: runs one kernel on the chosen device and checks every value it wrote.
-#include <chrono>
-#include <iostream>
-#include <vector>
-
 #include "app/command.h"
 #include "rhi/rhi.h"
 #include "shaders/common/constants_shared.h"
+
+#include <chrono>
+#include <iostream>
+#include <vector>
 
 namespace lumina::app {
 
@@ -59,8 +59,8 @@ int runGpuCheck(const ParsedArgs& args) {
     for (uint32_t i = 0; i < count; ++i) {
         if (values[i] != pcgHash(i ^ seed)) {
             if (wrong++ < 5) {
-                std::cerr << "gpu-check: element " << i << " is " << values[i] << ", expected " << pcgHash(i ^ seed)
-                          << '\n';
+                std::cerr << "gpu-check: element " << i << " is " << values[i] << ", expected "
+                          << pcgHash(i ^ seed) << '\n';
             }
         }
     }
@@ -81,9 +81,10 @@ Command gpuCheckCommand() {
     return {.name = "gpu-check",
             .summary = "run one kernel on the GPU and verify its output",
             .usage = "lumina gpu-check [--count N] [--api vulkan|d3d12] [--device N] [--validation]",
-            .description = "Compiles nothing at run time: loads the prebuilt kernel app/gpu_check, dispatches it over "
-                           "N elements, reads the result back and checks every value against the CPU. Exit code 0 "
-                           "when all match and the validation layer (with --validation) stayed silent.",
+            .description =
+                "Compiles nothing at run time: loads the prebuilt kernel app/gpu_check, dispatches it over "
+                "N elements, reads the result back and checks every value against the CPU. Exit code 0 "
+                "when all match and the validation layer (with --validation) stayed silent.",
             .flags = {{"count", "N", "number of elements (default 1048576)"}},
             .run = runGpuCheck};
 }

@@ -5,6 +5,7 @@
 #include "app/command.h"
 #include "app/commands/ddgi_options.h"
 #include "app/commands/scene_options.h"
+#include "app/commands/sh_grid_options.h"
 #include "gi/core/build_info.h"
 #include "gi/core/frame_context.h"
 #include "gi/core/pipeline_cache.h"
@@ -71,6 +72,9 @@ gi::FrameRendererSettings rendererSettings(const ParsedArgs& args, const scene::
     }
     if (settings.technique == gi::GiTechnique::Ddgi) {
         settings.ddgi = ddgiSettings(args, *shadows, scene);
+    }
+    if (settings.technique == gi::GiTechnique::ShGrid) {
+        settings.shGrid = shGridSettings(args, *shadows, scene);
     }
     settings.deferred = {.width = scene.image.width,
                          .height = scene.image.height,
@@ -156,13 +160,16 @@ int runRender(const ParsedArgs& args) {
     gi::FrameRendererSettings settings = rendererSettings(args, loaded, exposure);
     const bool lumen = settings.technique == gi::GiTechnique::Lumen;
     const bool ddgi = settings.technique == gi::GiTechnique::Ddgi;
-    const bool withGi = lumen || ddgi;
+    const bool shGrid = settings.technique == gi::GiTechnique::ShGrid;
+    const bool withGi = lumen || ddgi || shGrid;
     // Direct light is final after one frame; lumen converges (see kProbeSettleFrames), DDGI's
     // probes once their history has forgotten the frames before the cache converged. An animation
     // plays once through unless --frames says how long.
     const bool converge = withGi && !args.common.frames && !animated;
-    const uint32_t settleFrames =
-        ddgi ? gi::ddgiSettleUpdates(settings.ddgi->hysteresis) : kProbeSettleFrames;
+    // The SH grid is final once every probe is baked: nothing to settle after.
+    const uint32_t settleFrames = ddgi     ? gi::ddgiSettleUpdates(settings.ddgi->hysteresis)
+                                  : shGrid ? 0u
+                                           : kProbeSettleFrames;
     const uint32_t loopFrames =
         animated ? std::max<uint32_t>(
                        1u, uint32_t(std::ceil(loaded.animation.length() * double(loaded.framesPerSecond))))
@@ -192,6 +199,16 @@ int runRender(const ParsedArgs& args) {
                                              counts(d.probeCounts)
                                        : "one volume of " + counts(d.probeCounts) + " fitted to the scene")
                   << ", " << d.raysPerProbe << " rays each, hysteresis " << d.hysteresis << ")";
+    }
+    if (shGrid) {
+        const gi::ShGridSettings& g = *settings.shGrid;
+        const gi::ShGridLayout grid = gi::fitShGrid(g, loaded.worldBounds());
+        std::cout << ", preset "
+                  << args.get("preset", loaded.preset.empty() ? gi::kDefaultPreset : loaded.preset) << " ("
+                  << grid.counts.x << "x" << grid.counts.y << "x" << grid.counts.z << " probes, "
+                  << g.faceSize << "^2 cube faces, " << g.probesPerFrame << " probes baked per frame, "
+                  << g.sweeps << " sweeps" << (g.loadPath.empty() ? "" : ", loaded from " + g.loadPath)
+                  << ")";
     }
     std::cout << '\n';
 
@@ -234,7 +251,10 @@ int runRender(const ParsedArgs& args) {
         }
         if (withGi && (rendered % 16 == 0 || rendered == frames)) {
             std::cerr << "frame " << rendered << (converge ? "" : "/" + std::to_string(frames))
-                      << (settledAt ? ": surface cache converged" : ": surface cache converging") << '\n';
+                      << (shGrid      ? (settledAt ? ": sh grid baked" : ": sh grid baking")
+                          : settledAt ? ": surface cache converged"
+                                      : ": surface cache converging")
+                      << '\n';
         }
         if (converge && settledAt != 0 && rendered >= settledAt + settleFrames) {
             break;
@@ -247,7 +267,12 @@ int runRender(const ParsedArgs& args) {
                   << changes.changedLights << " light change(s), " << changes.changedMaterials
                   << " emission change(s)\n";
     }
-    if (withGi) {
+    if (shGrid) {
+        std::cout << "frames: " << rendered << " (sh grid "
+                  << (settledAt ? "baked after " + std::to_string(settledAt) : std::string("not fully baked"))
+                  << ")\n";
+    }
+    if (withGi && !shGrid) {
         std::cout << "frames: " << rendered << " (surface cache "
                   << (settledAt ? "converged after " + std::to_string(settledAt)
                                 : std::string("not converged"))
@@ -266,6 +291,11 @@ int runRender(const ParsedArgs& args) {
         std::cout << "ddgi probes: " << probes.total() << ", " << probes.inactive
                   << " inactive (classified off: only their " << LUMINA_DDGI_FIXED_RAYS
                   << " fixed rays traced, never blended), " << probes.active + probes.fresh << " active\n";
+    }
+
+    if (shGrid && args.has("sh-grid-save")) {
+        gi::saveShGrid(args.get("sh-grid-save"), renderer.shGrid()->readGrid(*device));
+        std::cout << "wrote " << args.get("sh-grid-save") << " (the baked SH grid)\n";
     }
 
     const auto writeHdr = [&](const std::filesystem::path& path) {
@@ -317,11 +347,11 @@ Command renderCommand() {
     return {
         .name = "render",
         .summary = "render a scene in real time: deferred direct light plus GI (lumen)",
-        .usage =
-            "lumina render SCENE [--technique direct|lumen|ddgi] [--preset low|medium|high] [--out img.png] "
-            "[--exr img.exr] [--dump-buffers DIR] [--timings] [--timings-json PATH] [--frames N] "
-            "[--warmup N] [--exposure EV] [--size WxH] [--no-default-light] [--sky FILE.exr "
-            "[--sky-intensity K]]",
+        .usage = "lumina render SCENE [--technique direct|lumen|ddgi|sh-grid] [--preset low|medium|high] "
+                 "[--out img.png] "
+                 "[--exr img.exr] [--dump-buffers DIR] [--timings] [--timings-json PATH] [--frames N] "
+                 "[--warmup N] [--exposure EV] [--size WxH] [--no-default-light] [--sky FILE.exr "
+                 "[--sky-intensity K]]",
         .description =
             "Renders SCENE (a built-in name or a scene/glTF path) in real time: GBuffer, sun shadow map, "
             "point and spot light cube shadows and direct light (docs/deferred.md); with the lumen "
@@ -341,9 +371,9 @@ Command renderCommand() {
             "docs/scenes.md) plays it, one loop unless --frames, and only what each frame changed is "
             "recomputed (docs/dynamic_scenes.md); --animation-frame F renders the pose at frame F "
             "still, converged like a static scene.",
-        .flags = withSceneLoadFlags(withDdgiFlags(
+        .flags = withSceneLoadFlags(withShGridFlags(withDdgiFlags(
             {{"technique", "NAME",
-              "GI technique: direct (none), lumen or ddgi (default: the scene's, else lumen)"},
+              "GI technique: direct (none), lumen, ddgi or sh-grid (default: the scene's, else lumen)"},
              {"preset", "NAME", "quality preset: low, medium or high (default: the scene's, else medium)"},
              {"probe-spacing", "N", "pixels per screen-probe edge (overrides the preset; 2..64)"},
              {"rays-per-probe", "N", "rays per screen probe (overrides the preset; 16..256)"},
@@ -358,7 +388,7 @@ Command renderCommand() {
              {"exposure", "EV", "exposure in stops before the tonemap (default 0)"},
              {"animation-frame", "F",
               "pose an animated scene at frame F and hold it still (default: play the animation, one loop "
-              "unless --frames)"}})),
+              "unless --frames)"}}))),
         .run = runRender};
 }
 

@@ -256,9 +256,10 @@ Command sdfCommand() {
     return {
         .name = "sdf",
         .summary = "build a scene's mesh SDFs and global SDF; slice, normal view, trace benchmark",
-        .usage = "lumina sdf SCENE [--resolution N] [--global-resolution N] [--slice-png PATH] "
-                 "[--normals-png PATH] [--trace-bench] [--camera-step N] [--build-only] [--no-cache] [--size WxH]"
-                 " [--no-default-light] [--sky FILE.exr [--sky-intensity K]]",
+        .usage =
+            "lumina sdf SCENE [--resolution N] [--global-resolution N] [--slice-png PATH] "
+            "[--normals-png PATH] [--trace-bench] [--camera-step N] [--build-only] [--no-cache] [--size WxH]"
+            " [--no-default-light] [--sky FILE.exr [--sky-intensity K]]",
         .description =
             "Builds every mesh SDF of SCENE (N voxels along each mesh's longest axis), or loads it from the "
             "cache ($LUMINA_CACHE_DIR/sdf, else the user cache folder), printing each mesh's time and the "

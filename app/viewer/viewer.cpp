@@ -141,6 +141,9 @@ void Viewer::buildRenderer() {
         if (settings.technique == gi::GiTechnique::Ddgi) {
             settings.ddgi = gi::ddgiPreset(*preset, scene_);
         }
+        if (settings.technique == gi::GiTechnique::ShGrid) {
+            settings.shGrid = gi::shGridPreset(*preset, scene_);
+        }
     } catch (const std::invalid_argument& e) {
         throw UsageError(e.what());
     }

@@ -15,7 +15,7 @@ constexpr std::string_view kCommonUsed[] = {"help", "api", "device", "size", "fr
 const std::vector<FlagSpec>& viewerFlags() {
     static const std::vector<FlagSpec> flags = {
         {"technique", "NAME",
-         "GI technique to start with: direct, lumen or ddgi (default: the scene's, else lumen)"},
+         "GI technique to start with: direct, lumen, ddgi or sh-grid (default: the scene's, else lumen)"},
         {"preset", "NAME",
          "quality preset to start with: low, medium or high (default: the scene's, else medium)"},
         {"exposure", "EV", "exposure in stops before the tonemap (default 0)"},

@@ -10,6 +10,8 @@
 //               probes) through FrameRenderer; presets are lumenPreset's (gi/frame/gi_technique.h)
 //   ddgi        the DDGI probe volumes on the same SDFs and surface cache (gi/ddgi/, ddgiPreset)
 //               with the direct preset's shadow maps of the same name.
+//   sh-grid     the SH probe grid baked from raster cube maps (gi/sh_grid/, shGridPreset), the
+//               same shadow maps.
 //   pathtracer  the reference path tracer with a fixed number of samples per pixel per frame,
 //               accumulating across frames (so "converged" is many frames' samples).
 //

@@ -5,13 +5,13 @@
 namespace lumina::gi {
 
 void DirectLightPass::record(FrameContext& frame, const DirectLightInputs& inputs,
-                             const rhi::TextureHandle& direct) const {
+                             const rhi::TextureHandle& direct, std::string_view passName) const {
     // The kernel addresses cube faces itself (cubeFaceOf / cubeFaceUv) and reads them as layers.
     rhi::BindingSetItem pointMaps = rhi::BindingSetItem::sampledTexture(5, inputs.pointShadowMaps);
     pointMaps.overrideDimension = true;
     pointMaps.viewDimension = rhi::TextureDimension::Texture2DArray;
     const rhi::TextureDesc& size = direct->desc();
-    frame.compute("direct light", "deferred/direct_light")
+    frame.compute(passName, "deferred/direct_light")
         .constantBuffer(0, inputs.frameConstants)
         .constantBuffer(1, inputs.shadowConstants)
         .read(0, inputs.gbuffer.albedo)

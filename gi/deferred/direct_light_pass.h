@@ -19,7 +19,9 @@ struct DirectLightInputs {
 
 class DirectLightPass {
 public:
-    void record(FrameContext& frame, const DirectLightInputs& inputs, const rhi::TextureHandle& direct) const;
+    // Timed as `passName` (another view's GBuffer, a probe's cube face, times apart).
+    void record(FrameContext& frame, const DirectLightInputs& inputs, const rhi::TextureHandle& direct,
+                std::string_view passName = "direct light") const;
 };
 
 } // namespace lumina::gi

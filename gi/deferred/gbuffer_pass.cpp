@@ -57,8 +57,10 @@ GBufferPass::GBufferPass(rhi::IDevice& device, const scene::Scene& scene, const 
                                               table.data(), table.size() * sizeof(gpu::GBufferResolveDraw));
 }
 
-void GBufferPass::record(FrameContext& frame, const GBuffer& gbuffer,
-                         const rhi::BufferHandle& frameConstants) const {
+void GBufferPass::record(FrameContext& frame, const GBuffer& gbuffer, const rhi::BufferHandle& frameConstants,
+                         std::string_view passName) const {
+    const std::string visibilityName = std::string(passName) + " visibility";
+    const std::string resolveName = std::string(passName) + " resolve";
     rhi::ICommandList& commands = frame.commands();
     commands.clearColor(*gbuffer.visibility, {0.0f, 0.0f, 0.0f, 0.0f});
     commands.clearDepth(*gbuffer.depth, 1.0f);
@@ -68,7 +70,7 @@ void GBufferPass::record(FrameContext& frame, const GBuffer& gbuffer,
         state.raster.cullMode = group.cull;
         state.depth = {.testEnable = true, .writeEnable = true, .compareOp = rhi::CompareOp::Less};
         frame
-            .raster("gbuffer visibility", "deferred/gbuffer_visibility.vsMain",
+            .raster(visibilityName, "deferred/gbuffer_visibility.vsMain",
                     "deferred/gbuffer_visibility.psMain")
             .state(state)
             .constantBuffer(0, frameConstants)
@@ -80,7 +82,7 @@ void GBufferPass::record(FrameContext& frame, const GBuffer& gbuffer,
             .draw(group.draws, true);
     }
     const rhi::TextureDesc& size = gbuffer.albedo->desc();
-    frame.compute("gbuffer resolve", "deferred/gbuffer_resolve")
+    frame.compute(resolveName, "deferred/gbuffer_resolve")
         .constants(gpu::GBufferResolveConstants{size.width, size.height, drawCount_, 0u})
         .constantBuffer(0, frameConstants)
         .read(0, gbuffer.visibility)

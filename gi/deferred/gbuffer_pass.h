@@ -9,6 +9,7 @@
 #include "gi/gpu_scene/gpu_scene.h"
 #include "gi/scene/scene.h"
 
+#include <string_view>
 #include <vector>
 
 namespace lumina::gi {
@@ -30,8 +31,10 @@ public:
     GBufferPass(rhi::IDevice& device, const scene::Scene& scene, const GpuScene& gpuScene);
 
     // Clears the visibility target and depth, draws every instance, resolves the attributes;
-    // frameConstants holds DeferredFrameConstants.
-    void record(FrameContext& frame, const GBuffer& gbuffer, const rhi::BufferHandle& frameConstants) const;
+    // frameConstants holds DeferredFrameConstants. Timed as `passName` + " visibility" and
+    // + " resolve" (another view of the scene, a probe's cube face, times apart).
+    void record(FrameContext& frame, const GBuffer& gbuffer, const rhi::BufferHandle& frameConstants,
+                std::string_view passName = "gbuffer") const;
 
 private:
     const GpuScene& gpuScene_;

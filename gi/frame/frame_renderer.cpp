@@ -64,6 +64,9 @@ FrameRendererSettings presetRendererSettings(GiTechnique technique, const Preset
     if (technique == GiTechnique::Ddgi) {
         settings.ddgi = ddgiPreset(preset, scene);
     }
+    if (technique == GiTechnique::ShGrid) {
+        settings.shGrid = shGridPreset(preset, scene);
+    }
     return settings;
 }
 
@@ -80,6 +83,11 @@ FrameRenderer::FrameRenderer(rhi::IDevice& device, const scene::Scene& scene, Gp
     case GiTechnique::Ddgi:
         gi_ = std::make_unique<DdgiGi>(device, scene, gpuScene, deferred_.width(), deferred_.height(),
                                        settings.ddgi ? *settings.ddgi : ddgiPreset(kDefaultPreset, scene));
+        break;
+    case GiTechnique::ShGrid:
+        gi_ = std::make_unique<ShGridGi>(device, scene, gpuScene, deferred_.width(), deferred_.height(),
+                                         settings.shGrid ? *settings.shGrid
+                                                         : shGridPreset(kDefaultPreset, scene));
         break;
     case GiTechnique::Direct:
         break;

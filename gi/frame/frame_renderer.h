@@ -18,6 +18,7 @@
 #include "gi/frame/gi_technique_renderer.h"
 #include "gi/frame/lumen_gi.h"
 #include "gi/gpu_scene/gpu_scene.h"
+#include "gi/sh_grid/sh_grid_gi.h"
 
 #include <memory>
 #include <optional>
@@ -27,9 +28,10 @@ namespace lumina::gi {
 
 struct FrameRendererSettings {
     GiTechnique technique = GiTechnique::Lumen;
-    DeferredSettings deferred;          // its width and height are the image's (0: the scene's)
-    std::optional<LumenSettings> lumen; // none: lumenPreset(kDefaultPreset, scene)
-    std::optional<DdgiSettings> ddgi;   // none: ddgiPreset(kDefaultPreset, scene)
+    DeferredSettings deferred;            // its width and height are the image's (0: the scene's)
+    std::optional<LumenSettings> lumen;   // none: lumenPreset(kDefaultPreset, scene)
+    std::optional<DdgiSettings> ddgi;     // none: ddgiPreset(kDefaultPreset, scene)
+    std::optional<ShGridSettings> shGrid; // none: shGridPreset(kDefaultPreset, scene)
 };
 
 // Settings for `technique` at `preset` (one table, preset.h): the preset's shadow maps and the
@@ -93,6 +95,7 @@ public:
     // The technique's own renderer when it is that technique, else null.
     const LumenGi* lumen() const { return dynamic_cast<const LumenGi*>(gi_.get()); }
     const DdgiGi* ddgi() const { return dynamic_cast<const DdgiGi*>(gi_.get()); }
+    const ShGridGi* shGrid() const { return dynamic_cast<const ShGridGi*>(gi_.get()); }
     // The indirect term the composite multiplies by indirectScale() x albedo; null without GI.
     rhi::TextureHandle indirect() const { return gi_ ? gi_->indirect() : nullptr; }
     float indirectScale() const;

@@ -27,6 +27,9 @@ GiTechnique parseGiTechnique(std::string_view name) {
     if (name == "ddgi") {
         return GiTechnique::Ddgi;
     }
+    if (name == "sh-grid") {
+        return GiTechnique::ShGrid;
+    }
     throw std::invalid_argument("unknown GI technique '" + std::string(name) + "' (choose " +
                                 joined(giTechniqueNames()) + ")");
 }
@@ -37,13 +40,15 @@ const char* giTechniqueName(GiTechnique technique) {
         return "lumen";
     case GiTechnique::Ddgi:
         return "ddgi";
+    case GiTechnique::ShGrid:
+        return "sh-grid";
     default:
         return "direct";
     }
 }
 
 std::vector<std::string> giTechniqueNames() {
-    return {"direct", "lumen", "ddgi"};
+    return {"direct", "lumen", "ddgi", "sh-grid"};
 }
 
 LumenSettings lumenPreset(std::string_view preset, const scene::Scene& scene) {

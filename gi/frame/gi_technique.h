@@ -5,6 +5,8 @@
 //   direct  the deferred renderer alone: no indirect light (what a user gets without GI)
 //   lumen   surface cache with surface radiosity + screen-probe final gather
 //   ddgi    probe volumes traced through the same SDFs and surface cache (gi/ddgi/, docs/ddgi.md)
+//   sh-grid a grid of L2 SH irradiance probes baked from raster cube maps (gi/sh_grid/,
+//           docs/sh_grid.md)
 //
 //   presets low, medium (default), high: one table for every technique (preset.h).
 #include "gi/frame/preset.h"
@@ -20,11 +22,11 @@
 
 namespace lumina::gi {
 
-enum class GiTechnique { Direct, Lumen, Ddgi };
+enum class GiTechnique { Direct, Lumen, Ddgi, ShGrid };
 
 inline constexpr const char* kDefaultTechnique = "lumen";
 
-// "direct", "lumen" or "ddgi"; std::invalid_argument naming the name and the choices otherwise.
+// "direct", "lumen", "ddgi" or "sh-grid"; std::invalid_argument naming the name and the choices otherwise.
 GiTechnique parseGiTechnique(std::string_view name);
 const char* giTechniqueName(GiTechnique technique);
 std::vector<std::string> giTechniqueNames();

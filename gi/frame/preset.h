@@ -7,6 +7,7 @@
 //   deferred.sunShadowSize = p.sunShadowSize;   // every technique
 //   LumenSettings lumen = lumenPreset(p, scene); // gi_technique.h: lengths scaled to the scene
 //   DdgiSettings ddgi = ddgiPreset(p, scene);    // gi/ddgi/ddgi_settings.h
+//   ShGridSettings sh = shGridPreset(p, scene);  // gi/sh_grid/sh_grid_settings.h
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -30,6 +31,10 @@ struct Preset {
     // DDGI (gi/ddgi/ddgi_settings.h).
     uint32_t ddgiProbesPerAxis; // probes along each axis of a volume fitted to the scene (or a cascade)
     uint32_t ddgiRaysPerProbe;  // rays per probe and update, the fixed relocation set included
+    // SH probe grid (gi/sh_grid/sh_grid_settings.h).
+    uint32_t shGridProbesPerAxis;  // probes along the scene's largest side
+    uint32_t shGridFaceSize;       // texels per side of a probe's cube-map faces
+    uint32_t shGridProbesPerFrame; // bake budget
 };
 
 inline constexpr const char* kDefaultPreset = "medium";

@@ -33,8 +33,8 @@ if(NOT second_out MATCHES "reference cornell_box_point: reused" OR NOT second_ou
   message(FATAL_ERROR "the second run rendered its references again instead of reusing them")
 endif()
 
-# Lumen and DDGI beside direct, and the path tracer at lumen's frame time.
-set(lumen_args bench --scenes cornell_box_point --techniques direct,lumen,ddgi,pathtracer --presets low
+# Lumen, DDGI and the SH grid beside direct, and the path tracer at lumen's frame time.
+set(lumen_args bench --scenes cornell_box_point --techniques direct,lumen,ddgi,sh-grid,pathtracer --presets low
                 --size 32x32 --frames 3 --reference-spp 16 --pt-budgets 1 --cache "${DIR}/cache"
                 --out "${DIR}/lumen" --validation)
 execute_process(COMMAND "${LUMINA}" ${lumen_args} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -42,8 +42,8 @@ message(STATUS "[lumen] lumina bench -> ${rc}\n${out}${err}")
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "[lumen] lumina bench exited with ${rc}")
 endif()
-# One scene x (direct low + lumen low + ddgi low + one path-tracer budget).
-execute_process(COMMAND python3 "${CHECK}" "${DIR}/lumen" 4 RESULT_VARIABLE rc)
+# One scene x (direct low + lumen low + ddgi low + sh-grid low + one path-tracer budget).
+execute_process(COMMAND python3 "${CHECK}" "${DIR}/lumen" 5 RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "[lumen] the bench's output failed its checks")
 endif()

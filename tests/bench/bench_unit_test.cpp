@@ -98,6 +98,9 @@ TEST(Presets, GetDearerFromLowToHigh) {
         EXPECT_LT(cheaper.radiosityTexelsPerFrame, dearer.radiosityTexelsPerFrame) << names[i];
         EXPECT_GE(cheaper.probeSpacing, dearer.probeSpacing) << names[i];
         EXPECT_LT(cheaper.raysPerProbe, dearer.raysPerProbe) << names[i];
+        EXPECT_LT(cheaper.shGridProbesPerAxis, dearer.shGridProbesPerAxis) << names[i];
+        EXPECT_LT(cheaper.shGridFaceSize, dearer.shGridFaceSize) << names[i];
+        EXPECT_LT(cheaper.shGridProbesPerFrame, dearer.shGridProbesPerFrame) << names[i];
     }
 }
 

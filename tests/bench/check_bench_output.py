@@ -18,10 +18,11 @@ def fail(message):
 
 def check_settled(key, r):
     """settled_after_frame: 1 for direct and the path tracer, the surface cache converging for lumen
-    and ddgi (or empty: not within the run); settled_frame_ms for the frames after it."""
+    and ddgi, the grid baked for sh-grid (or empty: not within the run); settled_frame_ms for the
+    frames after it."""
     frames = int(r["frames"])
     after = r["settled_after_frame"]
-    if r["technique"] not in ("lumen", "ddgi") and after != "1":
+    if r["technique"] not in ("lumen", "ddgi", "sh-grid") and after != "1":
         fail(f"{key}: settled_after_frame {after!r}, expected 1")
     if after and not 1 <= int(after) <= frames:
         fail(f"{key}: settled_after_frame {after} outside 1..{frames}")
@@ -84,7 +85,7 @@ def main():
             fail(f"{key}: non-finite pixels")
         if not 0 < int(r["frames_to_converge"]) <= int(r["frames"]):
             fail(f"{key}: frames_to_converge {r['frames_to_converge']}")
-        if r["technique"] in ("direct", "lumen", "ddgi") and not r["passes_ms"].count("gbuffer resolve="):
+        if r["technique"] in ("direct", "lumen", "ddgi", "sh-grid") and not r["passes_ms"].count("gbuffer resolve="):
             fail(f"{key}: no gbuffer resolve pass timing in '{r['passes_ms']}'")
         if r["technique"] == "lumen":
             for prefix in ("sdf: ", "surface cache: ", "screen probes: "):
@@ -92,6 +93,10 @@ def main():
                     fail(f"{key}: no '{prefix}...' pass timing in '{r['passes_ms']}'")
         if r["technique"] == "ddgi":
             for prefix in ("sdf: ", "surface cache: ", "ddgi: trace", "ddgi: sample"):
+                if prefix not in r["passes_ms"]:
+                    fail(f"{key}: no '{prefix}...' pass timing in '{r['passes_ms']}'")
+        if r["technique"] == "sh-grid":
+            for prefix in ("sh grid: bake gbuffer", "sh grid: project", "sh grid: sample"):
                 if prefix not in r["passes_ms"]:
                     fail(f"{key}: no '{prefix}...' pass timing in '{r['passes_ms']}'")
         check_settled(key, r)
@@ -113,10 +118,10 @@ def main():
             elif technique == "direct" and abs(first - last) > 1e-6 * max(first, 1e-9):
                 # The direct renderer is deterministic: frame 1 is already converged.
                 fail(f"{scene}/direct/{r['preset']}: relMSE changed over frames ({first} -> {last})")
-    # The direct renderer's indirect term is black; lumen's and ddgi's must not be.
+    # The direct renderer's indirect term is black; the GI techniques' must not be.
     black = {(r["scene"], r["preset"]): float(r["indirect_relmse_converged"])
              for r in rows if r["technique"] == "direct"}
-    for r in (r for r in rows if r["technique"] in ("lumen", "ddgi")):
+    for r in (r for r in rows if r["technique"] in ("lumen", "ddgi", "sh-grid")):
         if black.get((r["scene"], r["preset"])) == float(r["indirect_relmse_converged"]):
             fail(f"{r['scene']}/{r['technique']}/{r['preset']}: indirect error equals the direct renderer's (black)")
     print(f"check_bench_output: {len(rows)} configurations, all figures sane")

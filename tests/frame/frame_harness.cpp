@@ -28,6 +28,12 @@ gi::FrameRendererSettings rendererSettings(const scene::Scene& scene, const Fram
             settings.adjustDdgi(*out.ddgi);
         }
     }
+    if (settings.technique == gi::GiTechnique::ShGrid) {
+        out.shGrid = gi::shGridPreset(preset, scene);
+        if (settings.adjustShGrid) {
+            settings.adjustShGrid(*out.shGrid);
+        }
+    }
     return out;
 }
 

@@ -31,6 +31,8 @@ struct FrameHarnessSettings {
     // Changes to the DDGI preset's settings (the ddgi technique only): fewer probes, a lower
     // hysteresis so that a test converges sooner.
     std::function<void(gi::DdgiSettings&)> adjustDdgi = nullptr;
+    // Changes to the SH grid preset's settings (the sh-grid technique only).
+    std::function<void(gi::ShGridSettings&)> adjustShGrid = nullptr;
 };
 
 class FrameHarness {
@@ -55,8 +57,9 @@ public:
     image::Image read(const rhi::TextureHandle& texture) { return gi::readTextureImage(device_, *texture); }
 
     gi::FrameRenderer& renderer() { return renderer_; }
-    const gi::LumenGi& lumen() const { return *renderer_.lumen(); } // the lumen technique only
-    const gi::DdgiGi& ddgi() const { return *renderer_.ddgi(); }    // the ddgi technique only
+    const gi::LumenGi& lumen() const { return *renderer_.lumen(); }    // the lumen technique only
+    const gi::DdgiGi& ddgi() const { return *renderer_.ddgi(); }       // the ddgi technique only
+    const gi::ShGridGi& shGrid() const { return *renderer_.shGrid(); } // the sh-grid technique only
     const scene::Scene& scene() const { return scene_; }
     gi::PipelineCache& pipelines() { return pipelines_; }
     uint32_t frames() const { return frames_; }

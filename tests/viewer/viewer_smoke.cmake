@@ -90,6 +90,13 @@ if(ERR MATCHES "validation")
   message(FATAL_ERROR "[ddgi-views] validation messages:\n${ERR}")
 endif()
 
+# The SH grid's view.
+viewer(0 sh-grid-views cornell_box --technique sh-grid --preset low --size 32x32 --validation --cycle-views --frames 16)
+expect_match(sh-grid-views "${OUT}" "view: sh grid: irradiance E\n")
+if(ERR MATCHES "validation")
+  message(FATAL_ERROR "[sh-grid-views] validation messages:\n${ERR}")
+endif()
+
 run(0 reference render cornell_box --size ${SIZE} --frames ${FRAMES} --out "${WORK}/render.exr")
 run(0 compare compare "${WORK}/render.exr" "${WORK}/viewer.exr" --json "${WORK}/compare.json")
 file(READ "${WORK}/compare.json" json)
