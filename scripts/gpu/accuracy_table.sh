@@ -3,8 +3,9 @@
 # a path-traced reference (LUMINA_REFERENCE_SPP samples at pixel centres, default 65536), the
 # direct-only image and lumen at every preset after convergence (what `lumina render` does without
 # --frames), all at LUMINA_SIZE (default 256x256); then `lumina compare` of each against the
-# reference. Prints one markdown row per scene: relMSE of direct-only, and for each preset lumen's
-# relMSE, its ratio to direct-only's and lumen's mean radiance over the reference's. Writes
+# reference. LUMINA_TECHNIQUES (default lumen) names the GI techniques measured the same way.
+# Prints one markdown row per scene and technique: relMSE of direct-only, and for each preset the
+# technique's relMSE, its ratio to direct-only's and its mean radiance over the reference's. Writes
 # accuracy.txt (every compare in full) and accuracy.md (the table) under $OUT.
 set -uo pipefail
 out=${OUT:-$PWD/gpu-out}
@@ -14,6 +15,7 @@ export LUMINA_CACHE_DIR=/tmp/lumina-cache
 lumina=.devbin/lumina
 scenes=${LUMINA_SCENES:-"cornell_box cornell_box_point open_top_box two_rooms sunlit_rooms furnace_0.5 furnace_0.8 furnace_0.95 furnace_0.99"}
 presets=${LUMINA_PRESETS:-"low medium high"}
+techniques=${LUMINA_TECHNIQUES:-lumen}
 size=${LUMINA_SIZE:-256x256}
 spp=${LUMINA_REFERENCE_SPP:-65536}
 
@@ -29,8 +31,8 @@ figures() {
   echo "commit $(cat .devbin/commit 2>/dev/null || echo unknown), $size, reference $spp spp"
   $lumina --list-devices 2>&1 | head -3
 } | tee "$out/accuracy.txt"
-header="| scene | direct relMSE"
-rule="|---|---:"
+header="| scene | technique | direct relMSE"
+rule="|---|---|---:"
 for preset in $presets; do
   header="$header | $preset relMSE | $preset / direct | $preset mean / reference"
   rule="$rule|---:|---:|---:"
@@ -43,16 +45,19 @@ for scene in $scenes; do
   timeout 120 $lumina render "$scene" --technique direct --size "$size" --frames 1 --exr "/tmp/direct_$scene.exr" \
     --out "/tmp/direct_$scene.png" >/dev/null 2>&1
   read -r directRel _ _ < <(figures "$ref" "/tmp/direct_$scene.exr")
-  row="| \`$scene\` | $directRel"
-  for preset in $presets; do
-    exr=/tmp/lumen_${scene}_$preset.exr
-    timeout 600 $lumina render "$scene" --preset "$preset" --size "$size" --exr "$exr" \
-      --out "/tmp/lumen_${scene}_$preset.png" 2>&1 | grep -E '^(frames|surface)' >>"$out/accuracy.txt"
-    read -r rel mean refMean < <(figures "$ref" "$exr")
-    echo "$scene $preset: relMSE $rel (direct $directRel), mean $mean (reference $refMean)" | tee -a "$out/accuracy.txt"
-    row="$row | $rel | $(awk -v a="$rel" -v b="$directRel" 'BEGIN { printf "%.3f", a / b }') | $(awk -v a="$mean" -v b="$refMean" 'BEGIN { printf "%.3f", a / b }')"
+  for technique in $techniques; do
+    row="| \`$scene\` | $technique | $directRel"
+    for preset in $presets; do
+      exr=/tmp/${technique}_${scene}_$preset.exr
+      timeout 600 $lumina render "$scene" --technique "$technique" --preset "$preset" --size "$size" --exr "$exr" \
+        --out "/tmp/${technique}_${scene}_$preset.png" 2>&1 | grep -E '^(frames|surface)' >>"$out/accuracy.txt"
+      read -r rel mean refMean < <(figures "$ref" "$exr")
+      echo "$scene $technique $preset: relMSE $rel (direct $directRel), mean $mean (reference $refMean)" |
+        tee -a "$out/accuracy.txt"
+      row="$row | $rel | $(awk -v a="$rel" -v b="$directRel" 'BEGIN { printf "%.3f", a / b }') | $(awk -v a="$mean" -v b="$refMean" 'BEGIN { printf "%.3f", a / b }')"
+    done
+    echo "$row |" >>"$out/accuracy.md"
   done
-  echo "$row |" >>"$out/accuracy.md"
 done
 cat "$out/accuracy.md"
-(cd /tmp && tar czf "$out/accuracy_images.tgz" lumen_*.png direct_*.png 2>/dev/null)
+(cd /tmp && tar czf "$out/accuracy_images.tgz" ./*_*_*.png direct_*.png 2>/dev/null)

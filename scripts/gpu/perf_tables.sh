@@ -13,7 +13,7 @@ export LUMINA_CACHE_DIR=/tmp/lumina-cache
 lumina=.devbin/lumina
 scenes=${LUMINA_SCENES:-"cornell_box atrium city"}
 sizes=${LUMINA_SIZES:-"1280x720 1920x1080 3840x2160"}
-configs=${LUMINA_CONFIGS:-"direct:medium lumen:low lumen:medium lumen:high ddgi:low ddgi:medium ddgi:high"}
+configs=${LUMINA_CONFIGS:-"direct:medium lumen:low lumen:medium lumen:high ddgi:low ddgi:medium ddgi:high sh-grid:low sh-grid:medium sh-grid:high"}
 frames=${LUMINA_FRAMES:-300}
 warmup=${LUMINA_WARMUP:-100}
 # Runs not started by then are left out and named in perf.log, so that one device call still
