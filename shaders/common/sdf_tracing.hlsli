@@ -36,6 +36,27 @@ bool sdfIsMiss(SdfHit hit) {
     return hit.ids.z != 0u;
 }
 
+// The normal a ray sees at its hit, for the lookups that pick a side of the surface (the card
+// that owns the hit, the voxel lighting's faces): the SDF gradient, turned to face the ray. An
+// open surface's field is unsigned and has no side: at a hit on its plane or past it (a far
+// field starting inside its shell, a refined or overshooting step) the gradient can point along
+// the ray, and the lookup then read the surface's other side: in sunlit_rooms the shaded room's
+// probes read the sunlit outside of the roof and walls (docs/gi.md, energy). A ray that came
+// from elsewhere only ever sees a side that faces it. A ray that stopped where it started
+// (t = 0: its origin lies within a surface's shell, as radiosity probes in a room's corner do)
+// keeps the gradient: that names the side its origin is on. Where the gradient vanished, the
+// reversed ray.
+float3 sdfFacingNormal(float3 gradientNormal, float3 direction, float t) {
+    const float3 n = dot(gradientNormal, gradientNormal) > 0.0f ? gradientNormal : -direction;
+    return t > 0.0f && dot(n, direction) > 0.0f ? -n : n;
+}
+
+// The direction a hit was seen from, for lookups that skip what the ray cannot see (the voxel
+// lighting's faces): the ray's, or zero (see everything) for a ray that stopped where it started.
+float3 sdfSeenFrom(float3 direction, float t) {
+    return t > 0.0f ? direction : float3(0.0f, 0.0f, 0.0f);
+}
+
 float3 sdfWorldToObject(SdfInstanceDesc instance, float3 p) {
     float4 q = float4(p, 1.0f);
     return float3(dot(instance.worldToObject[0], q), dot(instance.worldToObject[1], q),

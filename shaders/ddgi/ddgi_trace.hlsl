@@ -33,7 +33,7 @@ RWStructuredBuffer<float4> gRayData : register(u0);
 
 // The surface cache's radiance leaving a hit towards the probe: its card's final lighting, or
 // the voxel lighting where no card covers it.
-float3 hitRadiance(float3 p, float3 n, bool nearField) {
+float3 hitRadiance(float3 p, float3 n, float3 seenFrom, bool nearField) {
     if (nearField) {
         const CardOwner owner = findCardOwner(p, n);
         if (owner.card != LUMINA_NO_CARD) {
@@ -43,7 +43,7 @@ float3 hitRadiance(float3 p, float3 n, bool nearField) {
             }
         }
     }
-    return sampleVoxelLighting(gDdgi.voxelGrid, p, n);
+    return sampleVoxelLighting(gDdgi.voxelGrid, p, n, seenFrom);
 }
 
 float4 traceRay(float3 origin, float3 direction) {
@@ -65,7 +65,7 @@ float4 traceRay(float3 origin, float3 direction) {
         return float4(0.0, 0.0, 0.0, -max(t, 1e-6 * maxDistance));
     }
     const float3 facing = dot(n, n) > 0.0 ? n : -direction;
-    return float4(ddgiSanitise(hitRadiance(hit.positionAndT.xyz, facing, nearField)), t);
+    return float4(ddgiSanitise(hitRadiance(hit.positionAndT.xyz, facing, sdfSeenFrom(direction, t), nearField)), t);
 }
 
 groupshared float4 gsProbe; // xyz: ray origin; w: rays to trace

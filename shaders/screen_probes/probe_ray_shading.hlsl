@@ -7,8 +7,9 @@
 //   in a voxel premultiplied by a, its occupancy): the trilinear sample divided by its alpha, so
 //   empty neighbour voxels do not darken a surface;
 // - the surface cache's (LUMINA_SP_FLAG_VOXEL_GRID: rgb mean radiance, a coverage, one column per
-//   face direction): the faces of the hit normal, coverage-weighted and leaning along -normal,
-//   since a cone hit stops in front of its surface, in empty voxels (coneHitVoxelRadiance).
+//   face direction): the faces of the hit normal turned to face the ray (sdfFacingNormal) that
+//   the ray can see, coverage-weighted and leaning along -normal, since a cone hit stops in front
+//   of its surface, in empty voxels (coneHitVoxelRadiance).
 // Hits outside the volume, or with no volume given, are black: nothing is known about their light.
 // One group per probe; thread t shades rays t, t + 64, ...
 #include "screen_probes/screen_probe_common.hlsli"
@@ -43,17 +44,18 @@ RWStructuredBuffer<float4> gRayRadiance : register(u0); // rgb: radiance; a: 1 h
 
 // One return per function, and none inside a loop: with an early return in the lean loop,
 // vkd3d-shader's DXBC made every far hit black on D3D12 under Wine (docs/d3d12.md).
-float3 coneHitVoxelRadiance(SdfHit hit) {
+float3 coneHitVoxelRadiance(SdfHit hit, float3 direction) {
     const float voxel = gSp.voxelGrid.minAndVoxelSize.w;
     const float3 p = hit.positionAndT.xyz;
-    const float3 n = hit.normalAndCoverage.xyz;
+    const float3 n = sdfFacingNormal(hit.normalAndCoverage.xyz, direction, hit.positionAndT.w);
+    const float3 seenFrom = sdfSeenFrom(direction, hit.positionAndT.w);
     const float radius = hit.positionAndT.w * gSp.trace.y;
     const float reach = LUMINA_SP_CONE_LEAN_RADII * radius + LUMINA_SP_CONE_LEAN_VOXELS * voxel;
     float3 radiance = float3(0.0, 0.0, 0.0);
     bool found = false;
     float lean = 0.5 * voxel;
     for (uint step = 0u; step < LUMINA_SP_CONE_LEAN_STEPS && lean <= reach && !found; ++step) {
-        const float4 v = voxelLightingTrilinear(gSp.voxelGrid, p - lean * n, n);
+        const float4 v = voxelLightingTrilinear(gSp.voxelGrid, p - lean * n, n, seenFrom);
         found = v.a > 0.0;
         radiance = found ? v.rgb : radiance;
         lean += voxel;
@@ -61,13 +63,13 @@ float3 coneHitVoxelRadiance(SdfHit hit) {
     return radiance;
 }
 
-float3 voxelRadiance(SdfHit hit) {
+float3 voxelRadiance(SdfHit hit, float3 direction) {
     float3 radiance = float3(0.0, 0.0, 0.0);
     if (hasFlag(LUMINA_SP_FLAG_VOXEL_LIGHTING)) {
         const float3 position = hit.positionAndT.xyz;
         const float3 uvw = (position - gSp.voxelMin.xyz) / (gSp.voxelMax.xyz - gSp.voxelMin.xyz);
         if (hasFlag(LUMINA_SP_FLAG_VOXEL_GRID)) {
-            radiance = coneHitVoxelRadiance(hit);
+            radiance = coneHitVoxelRadiance(hit, direction);
         } else if (all(uvw >= 0.0) && all(uvw <= 1.0)) {
             const float4 v = gVoxelLighting.SampleLevel(gLinearClamp, uvw, 0.0);
             radiance = v.a > LUMINA_SP_MIN_COVERAGE ? v.rgb / v.a : float3(0.0, 0.0, 0.0);
@@ -93,7 +95,8 @@ float3 voxelRadiance(SdfHit hit) {
         }
         const SdfHit hit = gHits[ray];
         const bool miss = sdfIsMiss(hit);
-        const float3 radiance = miss ? skyRadiance(gRays[ray].directionAndWeight.xyz) : voxelRadiance(hit);
+        const float3 direction = gRays[ray].directionAndWeight.xyz;
+        const float3 radiance = miss ? skyRadiance(direction) : voxelRadiance(hit, direction);
         gRayRadiance[ray] = float4(radiance, miss ? 0.0 : 1.0);
     }
 }

@@ -22,14 +22,23 @@ float3 probeRayOrigin(ScreenProbe p) {
     // the image where the spatial filter spread that probe. So the origin is pushed out along the
     // global SDF's gradient until it lies half the lift clear of every surface. Where three
     // zero-thickness quads meet within a global voxel (the open-top box's room corners) that
-    // gradient can point out of the room, and the push leaves the room (docs/gi.md, defects).
+    // gradient can point out of the room, and the push leaves the room (docs/gi.md, defects). Nor
+    // does the gradient within a hundredth of a voxel of one zero-thickness wall, whose unsigned
+    // field has no side: in sunlit_rooms a floor probe 1 cm from the north wall was pushed through
+    // it and saw the sky and the wall's sunlit outside (mean ray radiance 5.8 against the room's
+    // 0.1; docs/gi.md, energy). The camera sees the probe, so it lies on the probe's side of every
+    // wall beside it: a push away from the camera would cross one, and the origin moves towards
+    // the camera instead, into the free space between them.
     const float clearance = 0.5 * gSp.trace.z;
+    const float3 towardCamera = normalize(gSp.camera.positionAndTanHalfFovY.xyz - p.positionAndDepth.xyz);
     for (uint step = 0u; step < LUMINA_SP_ORIGIN_PUSH_STEPS; ++step) {
         const float distance = sdfSampleGlobal(origin);
         if (distance >= clearance) {
             break;
         }
-        origin += sdfGlobalNormal(origin) * (clearance - distance);
+        const float3 gradient = sdfGlobalNormal(origin);
+        const float3 push = dot(gradient, towardCamera) >= 0.0 ? gradient : towardCamera;
+        origin += push * (clearance - distance);
     }
     return origin;
 }

@@ -29,11 +29,8 @@ RWStructuredBuffer<float4> gNearField : register(u1);
 // Radiance leaving the surface at a near-field hit towards the probe, and where it came from.
 float4 nearFieldRadiance(SdfHit hit, float3 direction) {
     const float3 p = hit.positionAndT.xyz;
-    // The SDF normal faces the side the ray came from, also on open (unsigned) surfaces; the
-    // reversed ray stands in where the field's gradient vanished.
-    const float3 n = dot(hit.normalAndCoverage.xyz, hit.normalAndCoverage.xyz) > 0.0
-                         ? hit.normalAndCoverage.xyz
-                         : -direction;
+    // The side the ray came from, also on open (unsigned) surfaces (sdfFacingNormal).
+    const float3 n = sdfFacingNormal(hit.normalAndCoverage.xyz, direction, hit.positionAndT.w);
     const CardOwner owner = findCardOwner(p, n);
     if (owner.card != LUMINA_NO_CARD) {
         const float4 card = cardRadiance(gCards[owner.card], p);
@@ -41,7 +38,8 @@ float4 nearFieldRadiance(SdfHit hit, float3 direction) {
             return float4(card.rgb, float(LUMINA_SP_NEAR_CARD));
         }
     }
-    return float4(sampleVoxelLighting(gSp.voxelGrid, p, n), float(LUMINA_SP_NEAR_VOXEL));
+    const float3 seenFrom = sdfSeenFrom(direction, hit.positionAndT.w);
+    return float4(sampleVoxelLighting(gSp.voxelGrid, p, n, seenFrom), float(LUMINA_SP_NEAR_VOXEL));
 }
 
 // Traces ray `ray` of a probe from `origin`: the hit record and the near-field result.

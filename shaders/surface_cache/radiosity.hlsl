@@ -157,9 +157,9 @@ float3 finiteOrZero(float3 v) {
                 radiance = skyRadiance(dir);
             }
         } else {
-            float3 hitNormal = hit.normalAndCoverage.xyz;
-            hitNormal = dot(hitNormal, hitNormal) > 0.0f ? hitNormal : -dir;
-            radiance = finiteOrZero(sampleVoxelLighting(gConstants.grid, hit.positionAndT.xyz, hitNormal));
+            float3 hitNormal = sdfFacingNormal(hit.normalAndCoverage.xyz, dir, hit.positionAndT.w);
+            radiance = finiteOrZero(sampleVoxelLighting(gConstants.grid, hit.positionAndT.xyz, hitNormal,
+                                                        sdfSeenFrom(dir, hit.positionAndT.w)));
         }
         // Monte Carlo projection with the uniform hemisphere pdf 1 / (2 pi).
         float4 basis =

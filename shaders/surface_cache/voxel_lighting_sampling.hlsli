@@ -9,7 +9,11 @@
 // and the zero crossing of a coarse mesh SDF sits up to about half a mesh voxel off the
 // triangles), so the voxels holding the surface's texels are behind p, never in front. Where
 // that finds no covered voxel, a second lookup one voxel further back (a hit stopped far short).
-// Zero where neither finds a surface.
+// Zero where neither finds a surface. `ray` is the direction of the ray that found the hit, or
+// zero: a face that faces along the ray is one the ray cannot see, and is skipped. A cone that
+// passes a sheet's edge (sunlit_rooms: through the ceiling opening, past its rim) stops with a
+// normal pointing away from the edge, whose small component across the sheet named its sunlit
+// top for a ray going up, and the coverage weighting made that face the whole answer.
 //
 //   Texture3D<float4> gVoxelLighting;    // the includer binds it
 //   #define LUMINA_VOXEL_LIGHTING gVoxelLighting
@@ -19,9 +23,9 @@
 #error "define LUMINA_VOXEL_LIGHTING before including voxel_lighting_sampling.hlsli"
 #endif
 
-// Coverage-weighted trilinear lookup at p in the faces n points along: rgb, and the summed
-// weight in a.
-float4 voxelLightingTrilinear(VoxelGridInfo grid, float3 p, float3 n) {
+// Coverage-weighted trilinear lookup at p in the faces n points along that `ray` can see: rgb,
+// and the summed weight in a.
+float4 voxelLightingTrilinear(VoxelGridInfo grid, float3 p, float3 n, float3 ray) {
     float voxel = grid.minAndVoxelSize.w;
     float3 local = (p - grid.minAndVoxelSize.xyz) / voxel - 0.5f;
     int3 base = int3(floor(local));
@@ -34,7 +38,8 @@ float4 voxelLightingTrilinear(VoxelGridInfo grid, float3 p, float3 n) {
         // not from a cast of its offset: vkd3d-shader miscompiled this function's DXBC otherwise
         // (docs/d3d12.md).
         float na = axis == 0u ? n.x : (axis == 1u ? n.y : n.z);
-        float faceWeight = na * na;
+        float ra = axis == 0u ? ray.x : (axis == 1u ? ray.y : ray.z);
+        float faceWeight = na * ra > 0.0f ? 0.0f : na * na;
         if (faceWeight <= 0.0f) {
             continue;
         }
@@ -55,13 +60,13 @@ float4 voxelLightingTrilinear(VoxelGridInfo grid, float3 p, float3 n) {
     return float4(weight > 0.0f ? sum / weight : float3(0.0f, 0.0f, 0.0f), weight);
 }
 
-float3 sampleVoxelLighting(VoxelGridInfo grid, float3 p, float3 n) {
+float3 sampleVoxelLighting(VoxelGridInfo grid, float3 p, float3 n, float3 ray) {
     float voxel = grid.minAndVoxelSize.w;
-    float4 near = voxelLightingTrilinear(grid, p - 0.5f * voxel * n, n);
+    float4 near = voxelLightingTrilinear(grid, p - 0.5f * voxel * n, n, ray);
     if (near.a > 0.0f) {
         return near.rgb;
     }
-    return voxelLightingTrilinear(grid, p - 1.5f * voxel * n, n).rgb;
+    return voxelLightingTrilinear(grid, p - 1.5f * voxel * n, n, ray).rgb;
 }
 
 #endif
