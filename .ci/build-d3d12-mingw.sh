@@ -259,3 +259,10 @@ check_frame lumen 1e-4 vkd3d cornell_box --technique lumen --preset low --size 3
 # distance blends, relocation, classification and sampling, 4 frames. No importance sampling
 # feeds back into the rays, so it must match Vulkan to rounding (it matched bit for bit).
 check_frame DDGI 1e-6 vkd3d cornell_box --technique ddgi --preset low --size 32x32 --frames 4
+
+# The SH grid's frame: every probe's six cube faces through the two-pass GBuffer and the shadowed
+# direct light, the GPU SH projection and combine, and the trilinear sampling; the whole grid is
+# baked within the 8 frames (64 probes a frame). No feedback between frames, so it must match to
+# rounding (relMSE 6e-9 when added), with no validation message at all.
+check_frame sh-grid 1e-6 strict cornell_box_point --technique sh-grid --preset low --size 32x32 --frames 8 \
+    --sh-grid-budget 64
