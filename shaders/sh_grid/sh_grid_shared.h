@@ -16,7 +16,9 @@ LUMINA_GPU_NAMESPACE_BEGIN
 #define LUMINA_SH_GRID_COEFFICIENTS LUMINA_SH_COEFFICIENTS
 #define LUMINA_SH_GRID_FACES 6u
 // Threads of the per-face projection (one group per face) and of the per-pixel sampling.
-#define LUMINA_SH_GRID_PROJECT_GROUP LUMINA_LINEAR_GROUP_SIZE
+// 256 projection threads: each face runs as one group (on one SM), so the group is made wide; its
+// reduction buffer, 256 x 9 float3, stays under D3D's 32 KiB of groupshared memory.
+#define LUMINA_SH_GRID_PROJECT_GROUP 256u
 #define LUMINA_SH_GRID_SAMPLE_GROUP LUMINA_SCREEN_GROUP_SIZE
 
 // What the sampling pass and the bake's bounce read of the grid (register b0).
