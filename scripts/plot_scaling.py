@@ -8,7 +8,7 @@ import pathlib
 import re
 import sys
 
-DEFERRED = {"gbuffer visibility", "gbuffer resolve", "direct light", "composite", "sun shadow", "point shadows"}
+from perf_tables import DEFERRED  # the deferred renderer's passes: the rest of a frame is GI
 
 
 def figures(path: pathlib.Path):
