@@ -22,6 +22,7 @@
 #include "shaders/ddgi/ddgi_shared.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
@@ -42,6 +43,8 @@ constexpr uint32_t kTimingFrames = 60;
 // and never more than kMaxConvergeFrames.
 constexpr uint32_t kProbeSettleFrames = 48;
 constexpr uint32_t kMaxConvergeFrames = 2000;
+// More than three frames ahead only adds latency: the GPU is busy either way.
+constexpr uint32_t kMaxFramesInFlight = 3;
 
 gi::FrameRendererSettings rendererSettings(const ParsedArgs& args, const scene::Scene& scene,
                                            float exposure) {
@@ -221,8 +224,32 @@ int runRender(const ParsedArgs& args) {
     printMemory(renderer, sceneBytes - baseBytes, device->allocatedMemoryBytes() - sceneBytes);
 
     gi::TimingTable table(warmup);
-    rhi::CommandListHandle list = device->createCommandList();
+    // Frames in flight: frame n records into list n % count while the GPU still runs the frames
+    // before it; a list's begin() waits only for that list's previous submission (count frames
+    // back). Nothing the renderer reads on the CPU comes back from the GPU during a frame, its
+    // uploads live in each list's own upload memory, and every list starts with a full barrier
+    // (rhi/command_list.h), so frames that overlap on the CPU stay in order on the GPU.
+    const auto inFlight = static_cast<uint32_t>(args.getUint("frames-in-flight", 2, 1, kMaxFramesInFlight));
+    struct InFlightFrame {
+        rhi::CommandListHandle list;
+        std::vector<gi::SkippedPass> skipped;
+        uint64_t fence = 0; // the queue value its submission signals; 0: none pending
+    };
+    std::vector<InFlightFrame> slots(inFlight);
+    for (InFlightFrame& slot : slots) {
+        slot.list = device->createCommandList();
+    }
     rhi::IQueue& queue = device->queue(rhi::QueueType::Graphics);
+    // A slot's previous frame, once finished: its timers into the table.
+    const auto retire = [&](InFlightFrame& slot) {
+        if (slot.fence != 0) {
+            queue.waitForValue(slot.fence);
+            table.addFrame(slot.list->timerResults(), slot.skipped);
+            slot.fence = 0;
+        }
+    };
+    std::vector<double> wallMs;
+    auto lastFrameEnd = std::chrono::steady_clock::now();
     uint32_t settledAt = 0; // the frame after which the surface cache had converged; 0: not yet
     uint32_t rendered = 0;
     scene::Scene posed = animated ? loaded : scene::Scene{};
@@ -233,8 +260,10 @@ int runRender(const ParsedArgs& args) {
             scene::animateScene(posed, frameIndex);
             renderer.applyScene(posed);
         }
-        list->begin();
-        gi::FrameContext frame(pipelines, *list, frameIndex);
+        InFlightFrame& slot = slots[frameIndex % inFlight];
+        retire(slot);
+        slot.list->begin();
+        gi::FrameContext frame(pipelines, *slot.list, frameIndex);
         renderer.render(frame);
         if (renderer.lastChanges().any()) {
             ++changedFrames;
@@ -242,9 +271,14 @@ int runRender(const ParsedArgs& args) {
             changes.changedLights += renderer.lastChanges().changedLights;
             changes.changedMaterials += renderer.lastChanges().changedMaterials;
         }
-        list->end();
-        queue.waitForValue(queue.submit(*list));
-        table.addFrame(list->timerResults(), frame.skipped());
+        slot.list->end();
+        slot.fence = queue.submit(*slot.list);
+        slot.skipped = frame.skipped();
+        const auto now = std::chrono::steady_clock::now();
+        if (frameIndex >= warmup) {
+            wallMs.push_back(std::chrono::duration<double, std::milli>(now - lastFrameEnd).count());
+        }
+        lastFrameEnd = now;
         rendered = frameIndex + 1;
         if (settledAt == 0 && surfacesSettled(renderer)) {
             settledAt = rendered;
@@ -259,6 +293,15 @@ int runRender(const ParsedArgs& args) {
         if (converge && settledAt != 0 && rendered >= settledAt + settleFrames) {
             break;
         }
+    }
+    // The frames still in flight, oldest first, so the table keeps frame order.
+    for (uint32_t i = 0; i < inFlight; ++i) {
+        retire(slots[(rendered + i) % inFlight]);
+    }
+    if (timings && !wallMs.empty()) {
+        std::cout << "wall time: " << std::fixed << std::setprecision(3) << gi::median(wallMs)
+                  << " ms a frame (median from frame " << warmup << ", CPU recording and submission with "
+                  << inFlight << " frame(s) in flight)" << std::defaultfloat << '\n';
     }
     if (animated) {
         std::cout << "animation: " << rendered << " frame(s) played (a loop is " << loopFrames << " at "
@@ -350,7 +393,8 @@ Command renderCommand() {
         .usage = "lumina render SCENE [--technique direct|lumen|ddgi|sh-grid] [--preset low|medium|high] "
                  "[--out img.png] "
                  "[--exr img.exr] [--dump-buffers DIR] [--timings] [--timings-json PATH] [--frames N] "
-                 "[--warmup N] [--exposure EV] [--size WxH] [--no-default-light] [--sky FILE.exr "
+                 "[--warmup N] [--frames-in-flight N] [--exposure EV] [--size WxH] [--no-default-light] "
+                 "[--sky FILE.exr "
                  "[--sky-intensity K]]",
         .description =
             "Renders SCENE (a built-in name or a scene/glTF path) in real time: GBuffer, sun shadow map, "
@@ -385,6 +429,8 @@ Command renderCommand() {
              {"timings", "", "print the GPU time per pass (direct: 60 frames unless --frames)"},
              {"timings-json", "PATH", "write the per-pass timings as JSON"},
              {"warmup", "N", "frames left out of the timings (default 0)"},
+             {"frames-in-flight", "N",
+              "frames recorded ahead of the GPU, 1..3 (default 2; 1 waits for each frame before the next)"},
              {"exposure", "EV", "exposure in stops before the tonemap (default 0)"},
              {"animation-frame", "F",
               "pose an animated scene at frame F and hold it still (default: play the animation, one loop "

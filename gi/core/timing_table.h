@@ -1,15 +1,15 @@
 #pragma once
 // Per-pass GPU time over many frames: median, min and max after a warm-up, plus how often
 // each pass was skipped and why. Printed by `--timings`, written by `--timings-json`.
+#include "gi/core/frame_context.h"
+#include "rhi/command_list.h"
+
 #include <cstdint>
 #include <filesystem>
 #include <map>
 #include <ostream>
 #include <string>
 #include <vector>
-
-#include "gi/core/frame_context.h"
-#include "rhi/command_list.h"
 
 namespace lumina::gi {
 
@@ -38,11 +38,14 @@ public:
     std::vector<PassTiming> passes() const;
     std::vector<SkipCount> skips() const;
     double medianFrameMs() const;
+    // The sum of the top-level passes of the last frame added; 0 before any.
+    double lastFrameMs() const { return frameTotals_.empty() ? 0.0 : frameTotals_.back(); }
     uint32_t recordedFrames() const { return recordedFrames_; }
 
     void print(std::ostream& out) const;
     // Context (device, driver, API, commit, scene) goes in as key/value pairs.
-    void writeJson(const std::filesystem::path& path, const std::map<std::string, std::string>& context) const;
+    void writeJson(const std::filesystem::path& path,
+                   const std::map<std::string, std::string>& context) const;
 
 private:
     uint32_t warmupFrames_;

@@ -7,6 +7,7 @@
 //   LUMINA_GPU_NAMESPACE_BEGIN / _END  wrap shared declarations (namespace lumina::gpu in C++)
 //   LUMINA_INLINE                       `inline` in C++, nothing in HLSL
 //   LUMINA_OUT(T) / LUMINA_INOUT(T)     `T&` in C++, `out T` / `inout T` in HLSL
+//   LUMINA_UNROLL                       HLSL `[unroll]` before a loop; nothing in C++
 //   LUMINA_PRECISE                      HLSL `precise` (no FMA contraction); nothing in C++, where
 //                                       ISO mode (-std=c++20) already keeps a*b-c*d uncontracted
 //   LUMINA_STATIC_ASSERT_SIZE(T, n)     checks sizeof(T) == n and 16-byte alignment in C++ only
@@ -32,6 +33,7 @@
 #define LUMINA_OUT(T) T&
 #define LUMINA_INOUT(T) T&
 #define LUMINA_PRECISE
+#define LUMINA_UNROLL
 #define LUMINA_STATIC_ASSERT_SIZE(T, n)                                                                     \
     static_assert(sizeof(T) == (n), #T ": size must match the HLSL layout");                                \
     static_assert(sizeof(T) % 16 == 0, #T ": GPU structs are 16-byte multiples")
@@ -66,6 +68,7 @@ using std::sqrt;
 #define LUMINA_OUT(T) out T
 #define LUMINA_INOUT(T) inout T
 #define LUMINA_PRECISE precise
+#define LUMINA_UNROLL [unroll]
 #define LUMINA_STATIC_ASSERT_SIZE(T, n)
 
 #endif

@@ -129,10 +129,13 @@ LUMINA_INLINE float octTexelSampleArea(uint n) {
     return step * step;
 }
 
-// Solid angle of texel (x, y) of an n x n hemi-octahedral map.
+// Solid angle of texel (x, y) of an n x n hemi-octahedral map. Unrolled: as a loop, vkd3d-shader
+// 2.1's DXBC of it computed other values on Wine's D3D12 (every texel's solid angle, so the probe
+// composite's weights, came out wrong; docs/d3d12.md); unrolled it matches Vulkan, and the SPIR-V
+// computes the same bits either way.
 LUMINA_INLINE float hemiOctTexelSolidAngle(uint x, uint y, uint n) {
     float sum = 0.0f;
-    for (uint q = 0u; q < LUMINA_SP_TEXEL_SAMPLES; ++q) {
+    LUMINA_UNROLL for (uint q = 0u; q < LUMINA_SP_TEXEL_SAMPLES; ++q) {
         sum += hemiOctJacobian(octTexelSample(x, y, n, q));
     }
     return sum * octTexelSampleArea(n);

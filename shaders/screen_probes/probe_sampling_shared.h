@@ -103,10 +103,11 @@ LUMINA_INLINE float spTableAt(SpTexelTable t, uint i) {
 }
 
 // Probability mass of texel (x, y) of an n x n hemi-octahedral map under the cosine-weighted
-// hemisphere (pdf cos / pi): the same 4 x 4 quadrature as hemiOctTexelSolidAngle.
+// hemisphere (pdf cos / pi): the same 4 x 4 quadrature as hemiOctTexelSolidAngle, unrolled for the
+// same reason.
 LUMINA_INLINE float hemiOctTexelCosineMass(uint x, uint y, uint n) {
     float sum = 0.0f;
-    for (uint q = 0u; q < LUMINA_SP_TEXEL_SAMPLES; ++q) {
+    LUMINA_UNROLL for (uint q = 0u; q < LUMINA_SP_TEXEL_SAMPLES; ++q) {
         const float2 e = octTexelSample(x, y, n, q);
         sum += hemiOctJacobian(e) * hemiOctDecode(e).z;
     }

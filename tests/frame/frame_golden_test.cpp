@@ -52,6 +52,15 @@ constexpr GoldenTolerance kMaterial{.meanAbsError = 0.01, .percentile = 0.99, .p
 // change. The percentile is the unit range's: a cone-traced ray whose march ends one step
 // earlier on another driver relights a texel, and 1% of texels may differ by anything.
 constexpr GoldenTolerance kLighting{.meanAbsError = 0.001, .percentile = 0.99, .percentileError = 0.02};
+// The per-ray and per-probe-texel lighting on D3D12 under Wine (DXBC from vkd3d-shader,
+// docs/d3d12.md), against the same goldens. The APIs round differently by an ULP here and there;
+// the screen probes draw each frame's rays from PDFs built on the previous frame's radiance, so
+// after a few frames some rays land in a neighbouring PDF texel and hit something else. Measured
+// after kFrames on cornell_box: ray radiance mean 0.0014, 99th percentile 0.025; probe history
+// 99th percentile 0.047 (open_top_box stays within kLighting). The gather, the screen temporal
+// result and the frame, where those rays average out, keep kLighting on both APIs.
+constexpr GoldenTolerance kPerRayLightingD3d12{
+    .meanAbsError = 0.002, .percentile = 0.99, .percentileError = 0.06};
 
 GoldenSpec spec(const std::string& scene, const std::string& target, GoldenTolerance tolerance,
                 float previewMin = 0.0f, float previewMax = 1.0f, const std::string& technique = "lumen") {
@@ -217,14 +226,15 @@ TEST_P(FrameGoldenTest, ScreenProbePassesSurfaceCacheLayersAndFrameMatchTheirGol
     }
 
     const auto [position, normal] = placementImages(probes, gw, gh, h.scene().worldBounds());
+    const GoldenTolerance perRay = device().api() == rhi::Api::D3D12 ? kPerRayLightingD3d12 : kLighting;
     GoldenChecks checks = {
         {spec(name, "probe_position", kUnitRange, 0.0f, 1.5f), position},
         {spec(name, "probe_normal", kNormals, -1.0f, 1.0f), normal},
-        {spec(name, "near_field", kLighting), lightingView(nearField, 1.0f, Alpha::Source)},
-        {spec(name, "ray_radiance", kLighting), lightingView(rays, 1.0f, Alpha::Flag)},
-        {spec(name, "probe_composite", kLighting), lightingView(composite, 1.0f, Alpha::Weight)},
-        {spec(name, "probe_history", kLighting), lightingView(history, 1.0f, Alpha::Weight)},
-        {spec(name, "probe_filtered", kLighting), lightingView(filtered, 1.0f, Alpha::Weight)},
+        {spec(name, "near_field", perRay), lightingView(nearField, 1.0f, Alpha::Source)},
+        {spec(name, "ray_radiance", perRay), lightingView(rays, 1.0f, Alpha::Flag)},
+        {spec(name, "probe_composite", perRay), lightingView(composite, 1.0f, Alpha::Weight)},
+        {spec(name, "probe_history", perRay), lightingView(history, 1.0f, Alpha::Weight)},
+        {spec(name, "probe_filtered", perRay), lightingView(filtered, 1.0f, Alpha::Weight)},
         {spec(name, "irradiance_atlas", kLighting), irradianceView(atlas, Alpha::Drop)},
         {spec(name, "gather", kLighting), irradianceView(screenGather, Alpha::Drop)},
         {spec(name, "screen_temporal", kLighting), irradianceView(screenResult, Alpha::Frames)},

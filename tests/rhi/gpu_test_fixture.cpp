@@ -6,10 +6,13 @@
 
 namespace lumina::test {
 
-void GpuTestFixture::openDevice(rhi::Api api) {
+void GpuTestFixture::openDevice(rhi::Api api, bool validation) {
     rhi::DeviceDesc desc;
-    desc.validation = true;
-    desc.synchronizationValidation = true;
+    desc.validation = validation;
+    desc.synchronizationValidation = validation;
+    if (!validation) {
+        std::cout << "[ info ] validation is off for this test (it measures frame times)" << std::endl;
+    }
     desc.messageCallback = [log = log_](rhi::MessageSeverity severity, std::string_view message) {
         if (severity == rhi::MessageSeverity::Info) {
             // The backend's own notes ("D3D12: debug layer unavailable"): shown, never a failure.

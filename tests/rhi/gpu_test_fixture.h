@@ -33,8 +33,10 @@ struct ComputeKernel {
 
 class GpuTestFixture : public ::testing::Test {
 protected:
-    // Creates the device (validation and synchronization validation on) and the kernel library.
-    void openDevice(rhi::Api api);
+    // Creates the device (validation and synchronization validation on, unless a long run on the
+    // lent GPU asks for its own frame times: tests/frame/dynamic_long_run_test.cpp) and the
+    // kernel library.
+    void openDevice(rhi::Api api, bool validation = true);
     // Destroys the device, then fails the test if validation reported anything unexpected.
     void TearDown() override;
 
