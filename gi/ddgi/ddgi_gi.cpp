@@ -50,8 +50,7 @@ DdgiGi::DdgiGi(rhi::IDevice& device, const scene::Scene& scene, const GpuScene& 
 bool DdgiGi::uploadConstants(rhi::ICommandList& commands, const scene::Camera& camera) {
     const std::vector<DdgiVolumePlacement> placed = placeDdgiVolumes(settings_, sceneBox_, camera.position);
     const gpu::SdfSceneInfo sdf = scene_.sdf().sceneInfo();
-    const float diagonal =
-        glm::length(glm::vec3(sdf.globalMaxAndMaxDistance) - glm::vec3(sdf.globalMinAndVoxelSize));
+    const float diagonal = glm::length(sdf.globalMax - sdf.globalMin);
     const float nearField =
         settings_.nearFieldDistance > 0.0f ? std::min(settings_.nearFieldDistance, diagonal) : diagonal;
     gpu::DdgiConstants c{};
