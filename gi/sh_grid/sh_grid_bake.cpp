@@ -69,7 +69,9 @@ void ShGridBake::record(FrameContext& frame, const DeferredRenderer& deferred, c
             gpu::DeferredFrameConstants constants{};
             constants.camera =
                 makeGpuCamera(shGridFaceCamera(position, face, nearPlane_, farPlane_), faceSize_, faceSize_);
-            constants.counts = gpu::uint4(lights.lightCount, faceSize_, faceSize_, 0u);
+            constants.lightCount = lights.lightCount;
+            constants.width = faceSize_;
+            constants.height = faceSize_;
             frame.commands().writeBuffer(*faceCameras_[slot * LUMINA_SH_GRID_FACES + face], &constants,
                                          sizeof(constants));
             projections.push_back(shGridFaceConstants(constants.camera, face, faceSize_, bounce_));
