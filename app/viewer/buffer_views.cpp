@@ -83,8 +83,11 @@ rhi::TextureHandle Visualiser::record(gi::FrameContext& frame, const gi::FrameRe
         return renderer.deferred().ldr();
     }
     gpu::VisualiseConstants constants{};
-    constants.sizeModeLayer = {0, 0, view.mode, view.layer};
-    constants.rangeExposure = {view.lo, view.hi, settings.exposureScale, 0.0f};
+    constants.mode = view.mode;
+    constants.layer = view.layer;
+    constants.rangeLo = view.lo;
+    constants.rangeHi = view.hi;
+    constants.exposureScale = settings.exposureScale;
     if (view.source >= Source::SdfSlice) {
         return recordGiView(frame, renderer, view, settings, constants);
     }
@@ -105,8 +108,7 @@ rhi::TextureHandle Visualiser::recordBufferView(gi::FrameContext& frame, const g
         width = view.texture->desc().width;
         height = view.texture->desc().height;
     }
-    constants.sizeModeLayer.x = width;
-    constants.sizeModeLayer.y = height;
+    constants.size = glm::uvec2(width, height);
 
     // The entry point for each kind of source, and the t register it reads (visualise.hlsl).
     struct Entry {

@@ -47,9 +47,10 @@ uint32_t sliceUp(uint32_t axis) {
 // `panes` copies of the slice side by side.
 glm::uvec2 layOutSlice(gpu::VisualiseConstants& constants, const SliceSettings& slice, glm::vec3 boxMin,
                        glm::vec3 boxMax, glm::uvec3 dims, glm::uvec2 panes) {
-    constants.slice.x = slice.axis;
-    constants.sliceMin = glm::vec4(boxMin, slice.position);
-    constants.sliceMax = glm::vec4(boxMax, 0.0f);
+    constants.sliceAxis = slice.axis;
+    constants.sliceMin = boxMin;
+    constants.slicePosition = slice.position;
+    constants.sliceMax = boxMax;
     const glm::uvec2 voxels(dims[sliceAcross(slice.axis)] * panes.x, dims[sliceUp(slice.axis)] * panes.y);
     const uint32_t longer = std::max(1u, std::max(voxels.x, voxels.y));
     const uint32_t scale = std::max(1u, (kSliceMinTexels + longer - 1) / longer);
@@ -60,7 +61,9 @@ glm::uvec2 layOutSlice(gpu::VisualiseConstants& constants, const SliceSettings& 
 
 glm::uvec2 layOutProbeTiles(gpu::VisualiseConstants& constants, const gi::ScreenProbeResources& resources,
                             uint32_t perProbe, uint32_t tileWidth) {
-    constants.probeGrid = {resources.gridWidth, resources.gridHeight, perProbe, tileWidth};
+    constants.probeGrid = glm::uvec2(resources.gridWidth, resources.gridHeight);
+    constants.entriesPerProbe = perProbe;
+    constants.tileWidth = tileWidth;
     return {resources.gridWidth * tileWidth, resources.gridHeight * ((perProbe + tileWidth - 1) / tileWidth)};
 }
 
@@ -215,8 +218,7 @@ rhi::TextureHandle Visualiser::recordGiView(gi::FrameContext& frame, const gi::F
                                  .read(2, probes.probes[lumen.screenProbes().current()]));
         }
     }();
-    constants.sizeModeLayer.x = size.x;
-    constants.sizeModeLayer.y = size.y;
+    constants.size = glm::uvec2(size.x, size.y);
     pass.write(0, output(frame.device(), size.x, size.y))
         .constants(constants)
         .dispatchThreads(size.x, size.y, {LUMINA_VISUALISE_GROUP_SIZE, LUMINA_VISUALISE_GROUP_SIZE});
@@ -231,9 +233,8 @@ rhi::TextureHandle Visualiser::recordSdfSlice(gi::FrameContext& frame, const gi:
     const sdf::GlobalSdfSettings grid = sdfs.cascadeGrid(cascade);
     const glm::vec3 boxMax = grid.boundsMin + glm::vec3(grid.dims) * grid.voxelSize;
     const glm::uvec2 size = layOutSlice(constants, settings.slice, grid.boundsMin, boxMax, grid.dims, {1, 1});
-    constants.slice.y = cascade;
-    constants.sizeModeLayer.x = size.x;
-    constants.sizeModeLayer.y = size.y;
+    constants.sdfCascade = cascade;
+    constants.size = glm::uvec2(size.x, size.y);
     sdfs.bindForTracing(frame.compute("viewer: visualise", "viewer/visualise_sdf"))
         .write(0, output(frame.device(), size.x, size.y))
         .constants(constants)
@@ -252,9 +253,10 @@ rhi::TextureHandle Visualiser::recordSdfTrace(gi::FrameContext& frame, const gi:
                     sdf::defaultTraceParams(view.field, settings.camera.farPlane), "viewer: sdf trace",
                     std::tan(kConeHalfAngle));
     // The traced pixels are a buffer of float4 (0.5 n + 0.5, t): a probe map of one-texel tiles.
-    constants.sizeModeLayer.x = image.width;
-    constants.sizeModeLayer.y = image.height;
-    constants.probeGrid = {image.width, image.height, 1, 1};
+    constants.size = glm::uvec2(image.width, image.height);
+    constants.probeGrid = glm::uvec2(image.width, image.height);
+    constants.entriesPerProbe = 1;
+    constants.tileWidth = 1;
     frame.compute("viewer: visualise", "viewer/visualise.probeMap")
         .read(3, tracer_->pixels())
         .write(0, output(frame.device(), image.width, image.height))
@@ -269,14 +271,13 @@ rhi::TextureHandle Visualiser::recordVoxelSlice(gi::FrameContext& frame, const g
                                                 gpu::VisualiseConstants constants) {
     const surface_cache::VoxelLightingPass& voxels = lumen.surfaceCache().voxelLighting();
     const gpu::VoxelGridInfo& grid = voxels.grid();
-    const glm::vec3 boxMin(grid.minAndVoxelSize);
-    const glm::uvec3 dims(grid.dims);
-    const glm::vec3 boxMax = boxMin + glm::vec3(dims) * grid.minAndVoxelSize.w;
+    const glm::vec3 boxMin = grid.boxMin;
+    const glm::uvec3 dims = grid.dims;
+    const glm::vec3 boxMax = boxMin + glm::vec3(dims) * grid.voxelSize;
     const glm::uvec2 size =
         layOutSlice(constants, settings.slice, boxMin, boxMax, dims, {kVoxelPanesAcross, kVoxelPanesDown});
-    constants.slice.z = dims.x; // cubic (voxelGridOver)
-    constants.sizeModeLayer.x = size.x;
-    constants.sizeModeLayer.y = size.y;
+    constants.sliceDims = dims.x; // cubic (voxelGridOver)
+    constants.size = glm::uvec2(size.x, size.y);
     frame.compute("viewer: visualise", "viewer/visualise_lighting.voxelSlice")
         .read(1, voxels.volume())
         .write(0, output(frame.device(), size.x, size.y))

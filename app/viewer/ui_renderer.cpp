@@ -130,9 +130,9 @@ void UiRenderer::record(rhi::ICommandList& commands, gi::PipelineCache& pipeline
     const float height = float(target->desc().height);
     gpu::UiConstants constants{};
     // Pixel (DisplayPos .. DisplayPos + DisplaySize), y down, to clip space, y up.
-    constants.scaleTranslate = {2.0f / data.DisplaySize.x, -2.0f / data.DisplaySize.y,
-                                -1.0f - data.DisplayPos.x * 2.0f / data.DisplaySize.x,
-                                1.0f + data.DisplayPos.y * 2.0f / data.DisplaySize.y};
+    constants.scale = {2.0f / data.DisplaySize.x, -2.0f / data.DisplaySize.y};
+    constants.translate = {-1.0f - data.DisplayPos.x * 2.0f / data.DisplaySize.x,
+                           1.0f + data.DisplayPos.y * 2.0f / data.DisplaySize.y};
 
     commands.beginTimer("viewer: ui");
     uint32_t vertexBase = 0, indexBase = 0;
@@ -168,7 +168,7 @@ void UiRenderer::record(rhi::ICommandList& commands, gi::PipelineCache& pipeline
                 rhi::Rect{int32_t(x0), int32_t(y0), uint32_t(x1 - int32_t(x0)), uint32_t(y1 - int32_t(y0))};
             state.indexBuffer = rhi::IndexBufferBinding{indices_, rhi::IndexFormat::Uint16, 0};
             commands.setGraphicsState(state);
-            constants.vertexBase = {vertexBase + cmd.VtxOffset, 0, 0, 0};
+            constants.vertexBase = vertexBase + cmd.VtxOffset;
             commands.pushConstants(constants);
             commands.drawIndexed(
                 {.vertexOrIndexCount = cmd.ElemCount, .firstVertexOrIndex = indexBase + cmd.IdxOffset});

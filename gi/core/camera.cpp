@@ -1,7 +1,6 @@
 #include "gi/core/camera.h"
 
 #include <cmath>
-
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace lumina::gi {
@@ -23,14 +22,19 @@ gpu::GpuCamera makeGpuCamera(const scene::Camera& camera, uint32_t width, uint32
     const glm::mat4 viewProj = projectionMatrix(camera, aspect) * viewMatrix(camera);
 
     gpu::GpuCamera out{};
-    out.positionAndTanHalfFovY = glm::vec4(camera.position, std::tan(camera.fovY * 0.5f));
-    out.forwardAndAspect = glm::vec4(forward, aspect);
-    out.rightAndNear = glm::vec4(right, camera.nearPlane);
-    out.upAndFar = glm::vec4(up, camera.farPlane);
+    out.position = camera.position;
+    out.tanHalfFovY = std::tan(camera.fovY * 0.5f);
+    out.forward = forward;
+    out.aspect = aspect;
+    out.right = right;
+    out.nearPlane = camera.nearPlane;
+    out.up = up;
+    out.farPlane = camera.farPlane;
     for (int r = 0; r < 4; ++r) {
         out.viewProjRows[r] = glm::vec4(viewProj[0][r], viewProj[1][r], viewProj[2][r], viewProj[3][r]);
     }
-    out.imageSize = glm::vec4(float(width), float(height), 1.0f / float(width), 1.0f / float(height));
+    out.imageSize = glm::vec2(float(width), float(height));
+    out.invImageSize = glm::vec2(1.0f / float(width), 1.0f / float(height));
     return out;
 }
 

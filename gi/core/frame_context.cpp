@@ -3,8 +3,8 @@
 namespace lumina::gi {
 
 template <typename Self>
-std::vector<rhi::BindingSet> PassBindings<Self>::bindingSets(
-    const std::vector<rhi::BindingLayoutHandle>& layouts) const {
+std::vector<rhi::BindingSet>
+PassBindings<Self>::bindingSets(const std::vector<rhi::BindingLayoutHandle>& layouts) const {
     std::vector<rhi::BindingSet> sets;
     for (size_t space = 0; space < bindings_.size(); ++space) {
         sets.push_back({layouts[space], bindings_[space]});
@@ -15,8 +15,21 @@ std::vector<rhi::BindingSet> PassBindings<Self>::bindingSets(
 template class PassBindings<ComputePass>;
 template class PassBindings<RasterPass>;
 
+// Errors of pipeline creation (a binding the kernel does not find) name the pass too.
+template <typename Create>
+decltype(auto) namingPass(const std::string& pass, Create&& create) {
+    try {
+        return create();
+    } catch (const rhi::Error& e) {
+        throw rhi::Error("pass '" + pass + "': " + e.what());
+    }
+}
+
 void ComputePass::record(auto&& issue) {
-    const auto& entry = frame_.pipelines().compute(kernel_, bindings_, uint32_t(pushConstants_.size()));
+    const auto& entry = namingPass(
+        name_, [&]() -> const auto& {
+            return frame_.pipelines().compute(kernel_, bindings_, uint32_t(pushConstants_.size()));
+        });
     rhi::ICommandList& commands = frame_.commands();
     commands.beginTimer(name_);
     commands.setComputeState({entry.pipeline, bindingSets(entry.layouts)});
@@ -55,8 +68,11 @@ void RasterPass::draw(const std::vector<RasterDraw>& draws, bool indexed) {
         colorFormats.push_back(color.texture->desc().format);
     }
     const rhi::Format depthFormat = depth_ ? depth_->texture->desc().format : rhi::Format::Unknown;
-    const auto& entry = frame_.pipelines().graphics(vertexKernel_, pixelKernel_, bindings_, pushBytes, state_,
-                                                    colorFormats, depthFormat);
+    const auto& entry = namingPass(
+        name_, [&]() -> const auto& {
+            return frame_.pipelines().graphics(vertexKernel_, pixelKernel_, bindings_, pushBytes, state_,
+                                               colorFormats, depthFormat);
+        });
     rhi::GraphicsState graphics;
     graphics.pipeline = entry.pipeline;
     graphics.colorAttachments = colors_;

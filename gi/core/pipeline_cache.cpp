@@ -1,5 +1,7 @@
 #include "gi/core/pipeline_cache.h"
 
+#include "gi/core/kernel_bindings.h"
+
 #include <algorithm>
 
 namespace lumina::gi {
@@ -28,7 +30,15 @@ std::string rasterKey(const RasterPipelineState& state, const std::vector<rhi::F
 
 } // namespace
 
-std::vector<rhi::BindingLayoutHandle> PipelineCache::layoutsFor(const SpaceBindings& bindings, std::string& key) {
+void PipelineCache::checkBindings(std::string_view kernel, const SpaceBindings& bindings) {
+    const std::vector<uint32_t> spirv = readKernelSpirv(shaders_.directory().string(), kernel);
+    if (!spirv.empty()) {
+        checkKernelBindings(kernel, kernelResources(kernel, spirv), bindings);
+    }
+}
+
+std::vector<rhi::BindingLayoutHandle> PipelineCache::layoutsFor(const SpaceBindings& bindings,
+                                                                std::string& key) {
     std::vector<rhi::BindingLayoutHandle> layouts;
     for (uint32_t space = 0; space < bindings.size(); ++space) {
         rhi::BindingLayoutDesc desc;
@@ -53,13 +63,14 @@ std::vector<rhi::BindingLayoutHandle> PipelineCache::layoutsFor(const SpaceBindi
     return layouts;
 }
 
-const PipelineCache::ComputeEntry& PipelineCache::compute(std::string_view kernel, const SpaceBindings& bindings,
-                                                          uint32_t pushConstantBytes) {
+const PipelineCache::ComputeEntry&
+PipelineCache::compute(std::string_view kernel, const SpaceBindings& bindings, uint32_t pushConstantBytes) {
     std::string key = std::string(kernel) + "|" + std::to_string(pushConstantBytes) + "|";
     auto layouts = layoutsFor(bindings, key);
     if (const auto it = compute_.find(key); it != compute_.end()) {
         return it->second;
     }
+    checkBindings(kernel, bindings);
     ComputeEntry entry;
     entry.layouts = std::move(layouts);
     entry.pipeline = device_.createComputePipeline({.shader = shaders_.get(kernel),
@@ -69,18 +80,21 @@ const PipelineCache::ComputeEntry& PipelineCache::compute(std::string_view kerne
     return compute_.emplace(std::move(key), std::move(entry)).first->second;
 }
 
-const PipelineCache::GraphicsEntry& PipelineCache::graphics(std::string_view vertexKernel,
-                                                            std::string_view pixelKernel,
-                                                            const SpaceBindings& bindings,
-                                                            uint32_t pushConstantBytes,
-                                                            const RasterPipelineState& state,
-                                                            const std::vector<rhi::Format>& colorFormats,
-                                                            rhi::Format depthFormat) {
+const PipelineCache::GraphicsEntry&
+PipelineCache::graphics(std::string_view vertexKernel, std::string_view pixelKernel,
+                        const SpaceBindings& bindings, uint32_t pushConstantBytes,
+                        const RasterPipelineState& state, const std::vector<rhi::Format>& colorFormats,
+                        rhi::Format depthFormat) {
     std::string key = std::string(vertexKernel) + "|" + std::string(pixelKernel) + "|" +
-                      std::to_string(pushConstantBytes) + "|" + rasterKey(state, colorFormats, depthFormat) + "|";
+                      std::to_string(pushConstantBytes) + "|" + rasterKey(state, colorFormats, depthFormat) +
+                      "|";
     auto layouts = layoutsFor(bindings, key);
     if (const auto it = graphics_.find(key); it != graphics_.end()) {
         return it->second;
+    }
+    checkBindings(vertexKernel, bindings);
+    if (!pixelKernel.empty()) {
+        checkBindings(pixelKernel, bindings);
     }
     GraphicsEntry entry;
     entry.layouts = std::move(layouts);

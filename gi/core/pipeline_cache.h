@@ -2,12 +2,12 @@
 // Pipelines keyed by kernel name and binding signature. A pass names its kernel and binds
 // resources by register; the binding layouts and the pipeline follow from that, created
 // once and reused every frame.
+#include "rhi/rhi.h"
+
 #include <map>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include "rhi/rhi.h"
 
 namespace lumina::gi {
 
@@ -35,16 +35,20 @@ public:
         std::vector<rhi::BindingLayoutHandle> layouts;
     };
 
-    const ComputeEntry& compute(std::string_view kernel, const SpaceBindings& bindings, uint32_t pushConstantBytes);
+    const ComputeEntry& compute(std::string_view kernel, const SpaceBindings& bindings,
+                                uint32_t pushConstantBytes);
     const GraphicsEntry& graphics(std::string_view vertexKernel, std::string_view pixelKernel,
                                   const SpaceBindings& bindings, uint32_t pushConstantBytes,
-                                  const RasterPipelineState& state, const std::vector<rhi::Format>& colorFormats,
-                                  rhi::Format depthFormat);
+                                  const RasterPipelineState& state,
+                                  const std::vector<rhi::Format>& colorFormats, rhi::Format depthFormat);
 
     rhi::IDevice& device() { return device_; }
     rhi::ShaderLibrary& shaders() { return shaders_; }
 
 private:
+    // Every resource the kernel's SPIR-V uses is bound at its register, as the right kind
+    // (gi/core/kernel_bindings.h); run once, when the pipeline is created.
+    void checkBindings(std::string_view kernel, const SpaceBindings& bindings);
     std::vector<rhi::BindingLayoutHandle> layoutsFor(const SpaceBindings& bindings, std::string& key);
 
     rhi::IDevice& device_;

@@ -50,8 +50,7 @@ DdgiGi::DdgiGi(rhi::IDevice& device, const scene::Scene& scene, const GpuScene& 
 bool DdgiGi::uploadConstants(rhi::ICommandList& commands, const scene::Camera& camera) {
     const std::vector<DdgiVolumePlacement> placed = placeDdgiVolumes(settings_, sceneBox_, camera.position);
     const gpu::SdfSceneInfo sdf = scene_.sdf().sceneInfo();
-    const float diagonal =
-        glm::length(glm::vec3(sdf.globalMaxAndMaxDistance) - glm::vec3(sdf.globalMinAndVoxelSize));
+    const float diagonal = glm::length(sdf.globalMax - sdf.globalMin);
     const float nearField =
         settings_.nearFieldDistance > 0.0f ? std::min(settings_.nearFieldDistance, diagonal) : diagonal;
     gpu::DdgiConstants c{};
@@ -73,17 +72,26 @@ bool DdgiGi::uploadConstants(rhi::ICommandList& commands, const scene::Camera& c
     for (int row = 0; row < 3; ++row) {
         c.rotation[row] = gpu::float4(rotation[0][row], rotation[1][row], rotation[2][row], 0.0f);
     }
-    c.rays = gpu::uint4(settings_.raysPerProbe, LUMINA_DDGI_FIXED_RAYS, uint32_t(placed.size()),
-                        resources_.layout.probes);
-    c.trace = gpu::float4(nearField, diagonal, settings_.backfaceFraction, settings_.minFrontfaceDistance);
-    c.blend = gpu::float4(settings_.hysteresis, settings_.changedHysteresis, settings_.largeChangeRatio,
-                          settings_.distanceSharpness);
-    c.bias = gpu::float4(settings_.normalBias, settings_.viewBias, settings_.relocation ? 1.0f : 0.0f,
-                         settings_.classification ? 1.0f : 0.0f);
-    c.atlasSize = gpu::uint4(resources_.irradianceWidth(), resources_.irradianceHeight(),
-                             resources_.distanceWidth(), resources_.distanceHeight());
-    c.camera = gpu::float4(camera.position, 0.0f);
-    c.screen = gpu::uint4(resources_.width, resources_.height, 0u, 0u);
+    c.raysPerProbe = settings_.raysPerProbe;
+    c.fixedRays = LUMINA_DDGI_FIXED_RAYS;
+    c.volumeCount = uint32_t(placed.size());
+    c.probeCount = resources_.layout.probes;
+    c.nearFieldDistance = nearField;
+    c.maxTraceDistance = diagonal;
+    c.backfaceFraction = settings_.backfaceFraction;
+    c.minFrontfaceDistance = settings_.minFrontfaceDistance;
+    c.hysteresis = settings_.hysteresis;
+    c.changedHysteresis = settings_.changedHysteresis;
+    c.largeChangeRatio = settings_.largeChangeRatio;
+    c.distanceSharpness = settings_.distanceSharpness;
+    c.normalBias = settings_.normalBias;
+    c.viewBias = settings_.viewBias;
+    c.relocation = settings_.relocation ? 1u : 0u;
+    c.classification = settings_.classification ? 1u : 0u;
+    c.irradianceAtlasSize = gpu::uint2(resources_.irradianceWidth(), resources_.irradianceHeight());
+    c.distanceAtlasSize = gpu::uint2(resources_.distanceWidth(), resources_.distanceHeight());
+    c.cameraPosition = camera.position;
+    c.imageSize = gpu::uint2(resources_.width, resources_.height);
     c.voxelGrid = scene_.surfaceCache().voxelLighting().grid();
     commands.writeBuffer(*resources_.constants, &c, sizeof(c));
     return anyReset;

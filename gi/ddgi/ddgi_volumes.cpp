@@ -96,14 +96,19 @@ gpu::DdgiVolumeInfo ddgiVolumeInfo(const DdgiVolumePlacement& volume, const Ddgi
                                    const DdgiScroll& scroll) {
     const glm::uvec3 c = volume.counts;
     gpu::DdgiVolumeInfo info{};
-    info.originAndUnit =
-        gpu::float4(volume.origin, std::max({volume.spacing.x, volume.spacing.y, volume.spacing.z}));
-    info.spacing = gpu::float4(volume.spacing, maxOffset);
-    info.counts = gpu::uint4(c, layout.firstProbe.at(index));
-    info.atlas = gpu::uint4(c.x * c.y, layout.firstRow.at(index), flags, c.x * c.y * c.z);
-    info.scroll = gpu::uint4(scroll.offset, 0u);
-    info.enteredMin = gpu::uint4(scroll.enteredMin, 0u);
-    info.enteredMax = gpu::uint4(scroll.enteredMax, 0u);
+    info.origin = volume.origin;
+    info.distanceUnit = std::max({volume.spacing.x, volume.spacing.y, volume.spacing.z});
+    info.spacing = volume.spacing;
+    info.maxOffset = maxOffset;
+    info.counts = c;
+    info.firstProbe = layout.firstProbe.at(index);
+    info.tilesPerRow = c.x * c.y;
+    info.firstTileRow = layout.firstRow.at(index);
+    info.flags = flags;
+    info.probeCount = c.x * c.y * c.z;
+    info.scroll = scroll.offset;
+    info.enteredMin = scroll.enteredMin;
+    info.enteredMax = scroll.enteredMax;
     return info;
 }
 

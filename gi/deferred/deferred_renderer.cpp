@@ -96,7 +96,9 @@ void DeferredRenderer::uploadConstants(rhi::ICommandList& commands, const std::o
                                        const std::vector<glm::vec4>& cubes) {
     gpu::DeferredFrameConstants frame{};
     frame.camera = makeGpuCamera(camera_, settings_.width, settings_.height);
-    frame.counts = gpu::uint4(uint32_t(lights_.lights.size()), settings_.width, settings_.height, 0u);
+    frame.lightCount = uint32_t(lights_.lights.size());
+    frame.width = settings_.width;
+    frame.height = settings_.height;
     commands.writeBuffer(*frameConstants_, &frame, sizeof(frame));
 
     gpu::DeferredShadowConstants shadow{};
@@ -105,12 +107,19 @@ void DeferredRenderer::uploadConstants(rhi::ICommandList& commands, const std::o
             shadow.sunViewProjRows[r] = sun->viewProjRows[r];
         }
         const auto size = float(settings_.sunShadowSize);
-        shadow.sunMap = gpu::float4(size, 1.0f / size, sun->texelWorld, sun->depthRange);
+        shadow.sunMapSize = size;
+        shadow.sunMapInvSize = 1.0f / size;
+        shadow.sunTexelWorld = sun->texelWorld;
+        shadow.sunDepthRange = sun->depthRange;
     }
     const auto faceSize = float(settings_.pointShadowSize);
-    shadow.pointMap =
-        gpu::float4(faceSize, 1.0f / faceSize, LUMINA_POINT_SHADOW_NEAR_FRACTION, float(cubes.size()));
-    std::copy(cubes.begin(), cubes.end(), shadow.pointLights);
+    shadow.pointFaceSize = faceSize;
+    shadow.pointFaceInvSize = 1.0f / faceSize;
+    shadow.pointNearFraction = LUMINA_POINT_SHADOW_NEAR_FRACTION;
+    shadow.shadowedPointCount = uint32_t(cubes.size());
+    for (size_t i = 0; i < cubes.size(); ++i) {
+        shadow.pointLights[i] = {.position = glm::vec3(cubes[i]), .range = cubes[i].w};
+    }
     commands.writeBuffer(*shadowConstants_, &shadow, sizeof(shadow));
 
     if (lightsDirty_) {

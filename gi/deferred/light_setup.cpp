@@ -21,19 +21,21 @@ LightSetup setupLights(std::span<const scene::Light> lights) {
     LightSetup setup;
     for (size_t i = 0; i < lights.size(); ++i) {
         const scene::Light& light = lights[i];
-        gpu::DeferredLight packed{packLight(light), gpu::uint4(LUMINA_SHADOW_SLOT_NONE, 0u, 0u, 0u)};
+        gpu::DeferredLight packed{};
+        packed.light = packLight(light);
+        packed.shadowSlot = LUMINA_SHADOW_SLOT_NONE;
         const auto index = static_cast<uint32_t>(i);
         if (light.type == scene::LightType::Directional) {
             if (!setup.sun) {
                 setup.sun = index;
-                packed.shadow.x = 0u;
+                packed.shadowSlot = 0u;
             } else {
                 setup.unshadowed.push_back(lightName(light, i) +
                                            ": unshadowed, only the first directional light (" +
                                            lightName(lights[*setup.sun], *setup.sun) + ") has a shadow map");
             }
         } else if (setup.cubeLights.size() < LUMINA_MAX_SHADOWED_LIGHTS) {
-            packed.shadow.x = static_cast<uint32_t>(setup.cubeLights.size());
+            packed.shadowSlot = static_cast<uint32_t>(setup.cubeLights.size());
             setup.cubeLights.push_back(index);
         } else {
             setup.unshadowed.push_back(lightName(light, i) + ": unshadowed, beyond the " +

@@ -55,10 +55,14 @@ PathTracer::PathTracer(rhi::IDevice& device, const PathTracerScene& traced, cons
     constants.camera = makeGpuCamera(scene.camera, settings_.width, settings_.height);
     const uint32_t flags =
         (settings_.jitter ? LUMINA_PT_FLAG_JITTER : 0u) | (settings_.aovs ? LUMINA_PT_FLAG_AOVS : 0u);
-    constants.counts =
-        gpu::uint4(traced.stats().lights, traced.stats().emitters, settings_.maxBounces, flags);
-    constants.image =
-        gpu::uint4(settings_.width, settings_.height, settings_.seed, settings_.rouletteStartBounce);
+    constants.lightCount = traced.stats().lights;
+    constants.emitterCount = traced.stats().emitters;
+    constants.maxBounces = settings_.maxBounces;
+    constants.flags = flags;
+    constants.width = settings_.width;
+    constants.height = settings_.height;
+    constants.seed = settings_.seed;
+    constants.rouletteStartBounce = settings_.rouletteStartBounce;
     constants_ = rhi::createBufferWithData(device,
                                            {.size = sizeof(constants),
                                             .usage = rhi::BufferUsage::Constant,

@@ -41,8 +41,7 @@ uint32_t ScreenProbeGather::brdfRays() const {
 
 ScreenProbeGather::TraceRange ScreenProbeGather::traceRange(const ScreenProbeInputs& inputs) const {
     const gpu::SdfSceneInfo sdf = inputs.sdf.sceneInfo();
-    const float diagonal =
-        glm::length(glm::vec3(sdf.globalMaxAndMaxDistance) - glm::vec3(sdf.globalMinAndVoxelSize));
+    const float diagonal = glm::length(sdf.globalMax - sdf.globalMin);
     TraceRange range;
     range.maxDistance = settings_.maxTraceDistance > 0.0f ? settings_.maxTraceDistance : diagonal;
     if (inputs.surfaceCache) {
@@ -56,7 +55,7 @@ ScreenProbeGather::TraceRange ScreenProbeGather::traceRange(const ScreenProbeInp
 void ScreenProbeGather::uploadConstants(rhi::ICommandList& commands, const ScreenProbeInputs& inputs,
                                         const gpu::GpuCamera& camera, const TraceRange& range) {
     const ScreenProbeResources& r = resources_;
-    const float voxel = inputs.sdf.sceneInfo().globalMinAndVoxelSize.w;
+    const float voxel = inputs.sdf.sceneInfo().globalVoxelSize;
     const uint32_t brdfRays = this->brdfRays();
     // Far hits read the caller's volume, else the surface cache's (with its own lookup).
     const bool cacheVoxels = !inputs.voxelLighting.texture && inputs.surfaceCache;
@@ -78,26 +77,39 @@ void ScreenProbeGather::uploadConstants(rhi::ICommandList& commands, const Scree
     }
     if (cacheVoxels) {
         flags |= LUMINA_SP_FLAG_VOXEL_GRID;
-        voxelMin = glm::vec3(c.voxelGrid.minAndVoxelSize);
-        voxelMax = voxelMin + glm::vec3(c.voxelGrid.dims) * c.voxelGrid.minAndVoxelSize.w;
+        voxelMin = c.voxelGrid.boxMin;
+        voxelMax = voxelMin + glm::vec3(c.voxelGrid.dims) * c.voxelGrid.voxelSize;
     }
     c.camera = camera;
     c.previousCamera = previousCamera_ ? *previousCamera_ : camera;
-    c.grid = gpu::uint4(r.gridWidth, r.gridHeight, settings_.probeSpacing, r.probeCount);
-    c.screen = gpu::uint4(r.width, r.height, uint32_t(frames_), flags);
-    c.rays = gpu::uint4(r.raysPerProbe, brdfRays, r.raysPerProbe - brdfRays, 0u);
-    c.voxelMin = gpu::float4(voxelMin, 0.0f);
-    c.voxelMax = gpu::float4(voxelMax, 0.0f);
-    c.trace = gpu::float4(range.maxDistance, std::tan(settings_.coneHalfAngle),
-                          settings_.originBiasVoxels * voxel, range.nearField);
-    c.temporal = gpu::float4(settings_.probeHistoryBlend, settings_.outlierClamp,
-                             settings_.screenHistoryBlend, settings_.lightingPdfFloor);
-    c.filter = gpu::float4(settings_.filterPlaneScale, settings_.filterNormalPower,
-                           settings_.historyPlaneTolerance, settings_.historyNormalTolerance);
+    c.probeGrid = gpu::uint2(r.gridWidth, r.gridHeight);
+    c.probeSpacing = settings_.probeSpacing;
+    c.probeCount = r.probeCount;
+    c.imageSize = gpu::uint2(r.width, r.height);
+    c.frameIndex = uint32_t(frames_);
+    c.flags = flags;
+    c.raysPerProbe = r.raysPerProbe;
+    c.brdfRays = brdfRays;
+    c.lightingRays = r.raysPerProbe - brdfRays;
+    c.voxelMin = voxelMin;
+    c.voxelMax = voxelMax;
+    c.maxTraceDistance = range.maxDistance;
+    c.coneTanHalfAngle = std::tan(settings_.coneHalfAngle);
+    c.originBias = settings_.originBiasVoxels * voxel;
+    c.nearFieldDistance = range.nearField;
+    c.probeHistoryBlend = settings_.probeHistoryBlend;
+    c.outlierClamp = settings_.outlierClamp;
+    c.screenHistoryBlend = settings_.screenHistoryBlend;
+    c.lightingPdfFloor = settings_.lightingPdfFloor;
+    c.filterPlaneScale = settings_.filterPlaneScale;
+    c.filterNormalPower = settings_.filterNormalPower;
+    c.historyPlaneTolerance = settings_.historyPlaneTolerance;
+    c.historyNormalTolerance = settings_.historyNormalTolerance;
     c.changeRegionCount = uint32_t(changes_.size());
     for (size_t i = 0; i < changes_.size(); ++i) {
-        c.changeRegionMin[i] = gpu::float4(changes_[i].box.min, changes_[i].keep);
-        c.changeRegionMax[i] = gpu::float4(changes_[i].box.max, 0.0f);
+        c.changeRegions[i].boxMin = changes_[i].box.min;
+        c.changeRegions[i].historyKept = changes_[i].keep;
+        c.changeRegions[i].boxMax = changes_[i].box.max;
     }
     changes_.clear();
     commands.writeBuffer(*r.constants, &c, sizeof(c));

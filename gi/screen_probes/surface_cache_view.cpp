@@ -41,11 +41,11 @@ void checkSurfaceCacheView(const SurfaceCacheView& view) {
                                     (view.cards ? "card BVH" : "card") + " buffer missing");
     }
     const gpu::VoxelGridInfo& grid = view.voxelGrid;
-    if (!(grid.minAndVoxelSize.w > 0.0f) || grid.dims.x == 0 || grid.dims.y == 0 || grid.dims.z == 0) {
+    if (!(grid.voxelSize > 0.0f) || grid.dims.x == 0 || grid.dims.y == 0 || grid.dims.z == 0) {
         throw std::invalid_argument("screen probes: surface cache voxel grid has voxel size " +
-                                    std::to_string(grid.minAndVoxelSize.w) + " and " +
-                                    std::to_string(grid.dims.x) + "x" + std::to_string(grid.dims.y) + "x" +
-                                    std::to_string(grid.dims.z) + " voxels (expected > 0)");
+                                    std::to_string(grid.voxelSize) + " and " + std::to_string(grid.dims.x) +
+                                    "x" + std::to_string(grid.dims.y) + "x" + std::to_string(grid.dims.z) +
+                                    " voxels (expected > 0)");
     }
 }
 

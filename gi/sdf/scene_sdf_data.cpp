@@ -99,7 +99,7 @@ gpu::SdfSceneInfo SceneSdfData::sceneInfo(uint32_t instanceBvhNodes,
                                     " windows for " + std::to_string(cascades.count) + " cascades");
     }
     gpu::SdfSceneInfo info{};
-    info.invAtlasDims = atlas.info().invAtlasDims;
+    info.invAtlasDims = glm::vec3(atlas.info().invAtlasDims);
     bvh::Aabb covered;
     for (uint32_t c = 0; c < cascades.count; ++c) {
         const GlobalSdfSettings grid = cascadeGrid(cascades, c, windows[c]);
@@ -107,19 +107,27 @@ gpu::SdfSceneInfo SceneSdfData::sceneInfo(uint32_t instanceBvhNodes,
         covered.extend(grid.boundsMin);
         covered.extend(gridMax);
         gpu::SdfGlobalCascade& cascade = info.cascades[c];
-        cascade.minAndVoxelSize = glm::vec4(grid.boundsMin, grid.voxelSize);
-        cascade.maxAndMaxDistance = glm::vec4(gridMax, grid.maxDistance);
-        cascade.latticeOriginAndShell = glm::vec4(cascades.latticeOrigin, grid.openShellExtra);
-        cascade.window = glm::uvec4(glm::uvec3(windows[c]), 0u); // int bits
-        cascade.wrapAndSlab = glm::uvec4(cascadeTexel(cascades, windows[c], glm::uvec3(0)), c * grid.dims.z);
-        cascade.dims = glm::uvec4(grid.dims, 0u);
+        cascade.boxMin = grid.boundsMin;
+        cascade.voxelSize = grid.voxelSize;
+        cascade.boxMax = gridMax;
+        cascade.maxDistance = grid.maxDistance;
+        cascade.latticeOrigin = cascades.latticeOrigin;
+        cascade.openShellExtra = grid.openShellExtra;
+        cascade.window = glm::uvec3(windows[c]); // int bits
+        cascade.wrap = cascadeTexel(cascades, windows[c], glm::uvec3(0));
+        cascade.slabFirstZ = c * grid.dims.z;
+        cascade.dims = grid.dims;
     }
     const GlobalSdfSettings finest = cascadeGrid(cascades, 0, windows[0]);
-    info.globalMinAndVoxelSize = glm::vec4(covered.min, finest.voxelSize);
-    info.globalMaxAndMaxDistance = glm::vec4(covered.max, finest.maxDistance);
-    info.globalDims = glm::uvec4(cascades.dims, cascades.count);
-    info.counts =
-        glm::uvec4(uint32_t(instances.size()), instanceBvhNodes, uint32_t(atlas.volumes.size()), 0u);
+    info.globalMin = covered.min;
+    info.globalVoxelSize = finest.voxelSize;
+    info.globalMax = covered.max;
+    info.globalMaxDistance = finest.maxDistance;
+    info.globalDims = cascades.dims;
+    info.cascadeCount = cascades.count;
+    info.instanceCount = uint32_t(instances.size());
+    info.instanceBvhNodeCount = instanceBvhNodes;
+    info.volumeCount = uint32_t(atlas.volumes.size());
     return info;
 }
 

@@ -29,9 +29,9 @@ scene::Camera shGridFaceCamera(const glm::vec3& position, uint32_t face, float n
 gpu::ShGridFaceConstants shGridFaceConstants(const gpu::GpuCamera& camera, uint32_t face, uint32_t faceSize,
                                              bool bounce) {
     gpu::ShGridFaceConstants c{};
-    c.forward = gpu::float4(glm::vec3(camera.forwardAndAspect), 0.0f);
-    c.right = gpu::float4(glm::vec3(camera.rightAndNear), 0.0f);
-    c.up = gpu::float4(glm::vec3(camera.upAndFar), 0.0f);
+    c.forward = gpu::float4(camera.forward, 0.0f);
+    c.right = gpu::float4(camera.right, 0.0f);
+    c.up = gpu::float4(camera.up, 0.0f);
     c.face = face;
     c.faceSize = faceSize;
     c.bounce = bounce ? 1u : 0u;
@@ -69,7 +69,9 @@ void ShGridBake::record(FrameContext& frame, const DeferredRenderer& deferred, c
             gpu::DeferredFrameConstants constants{};
             constants.camera =
                 makeGpuCamera(shGridFaceCamera(position, face, nearPlane_, farPlane_), faceSize_, faceSize_);
-            constants.counts = gpu::uint4(lights.lightCount, faceSize_, faceSize_, 0u);
+            constants.lightCount = lights.lightCount;
+            constants.width = faceSize_;
+            constants.height = faceSize_;
             frame.commands().writeBuffer(*faceCameras_[slot * LUMINA_SH_GRID_FACES + face], &constants,
                                          sizeof(constants));
             projections.push_back(shGridFaceConstants(constants.camera, face, faceSize_, bounce_));

@@ -18,7 +18,7 @@ constexpr float kOriginOffsetVoxels = 2.0f;
 
 float radiosityOriginOffset(const RadiosityTraceSettings& settings, const sdf::SceneSdf& sdf) {
     return settings.originOffset > 0.0f ? settings.originOffset
-                                        : kOriginOffsetVoxels * sdf.sceneInfo().globalMinAndVoxelSize.w;
+                                        : kOriginOffsetVoxels * sdf.sceneInfo().globalVoxelSize;
 }
 
 RadiosityPass::RadiosityPass(rhi::IDevice& device, uint32_t atlasSize, const sdf::SceneSdf& sdf,
@@ -38,9 +38,7 @@ RadiosityPass::RadiosityPass(rhi::IDevice& device, uint32_t atlasSize, const sdf
     const gpu::SdfSceneInfo info = sdf.sceneInfo();
     originOffset_ = radiosityOriginOffset(settings, sdf);
     maxDistance_ =
-        settings.maxDistance > 0.0f
-            ? settings.maxDistance
-            : glm::length(glm::vec3(info.globalMaxAndMaxDistance) - glm::vec3(info.globalMinAndVoxelSize));
+        settings.maxDistance > 0.0f ? settings.maxDistance : glm::length(info.globalMax - info.globalMin);
     const uint64_t probesPerSide = atlasSize / LUMINA_RADIOSITY_PROBE_SPACING;
     const rhi::BufferDesc desc{.size = probesPerSide * probesPerSide * sizeof(gpu::RadiosityProbe),
                                .structStride = sizeof(gpu::RadiosityProbe),
@@ -66,10 +64,15 @@ void RadiosityPass::record(gi::FrameContext& frame, const AtlasSurfaceBindings& 
         }
         return;
     }
-    const gpu::RadiosityConstants constants{
-        .grid = voxels.grid(),
-        .atlas = {surfaces.atlas.size(), tiles.count(), tiles.tilesPerRow(), update},
-        .trace = {originOffset_, maxDistance_, filterMinCosine_, blend}};
+    const gpu::RadiosityConstants constants{.grid = voxels.grid(),
+                                            .atlasSize = surfaces.atlas.size(),
+                                            .tileCount = tiles.count(),
+                                            .tilesPerRow = tiles.tilesPerRow(),
+                                            .updateIndex = update,
+                                            .originOffset = originOffset_,
+                                            .maxDistance = maxDistance_,
+                                            .filterMinCosine = filterMinCosine_,
+                                            .temporalBlend = blend};
     const auto bindSurfaces = [&](gi::ComputePass& pass) -> gi::ComputePass& {
         return pass.constants(constants)
             .read(6, surfaces.atlas.surface)

@@ -12,8 +12,10 @@ void SurfaceCacheCombinePass::record(gi::FrameContext& frame, const SurfaceCache
         return;
     }
     frame.compute(kPassName, "surface_cache/surface_cache_combine")
-        .constants(
-            gpu::AtlasTileListConstants{.atlas = {atlas.size(), tiles.count(), tiles.tilesPerRow(), update}})
+        .constants(gpu::AtlasTileListConstants{.atlasSize = atlas.size(),
+                                               .tileCount = tiles.count(),
+                                               .tilesPerRow = tiles.tilesPerRow(),
+                                               .updateIndex = update})
         .read(0, atlas.albedo)
         .read(1, atlas.surface)
         .read(2, atlas.direct)

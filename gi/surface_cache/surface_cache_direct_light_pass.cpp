@@ -29,8 +29,10 @@ void SurfaceCacheDirectLightPass::record(gi::FrameContext& frame, const AtlasSur
     pointMaps.overrideDimension = true;
     pointMaps.viewDimension = rhi::TextureDimension::Texture2DArray;
     frame.compute(kPassName, "surface_cache/surface_cache_direct_light")
-        .constants(gpu::SurfaceDirectLightConstants{
-            .atlas = {surfaces.atlas.size(), tiles.count(), tiles.tilesPerRow(), lights.lightCount}})
+        .constants(gpu::SurfaceDirectLightConstants{.atlasSize = surfaces.atlas.size(),
+                                                    .tileCount = tiles.count(),
+                                                    .tilesPerRow = tiles.tilesPerRow(),
+                                                    .lightCount = lights.lightCount})
         .constantBuffer(0, lights.shadowConstants)
         .read(0, lights.sunShadowMap)
         .bind(pointMaps)

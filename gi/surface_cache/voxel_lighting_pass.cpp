@@ -26,8 +26,7 @@ gpu::VoxelGridInfo voxelGridOver(glm::vec3 boundsMin, glm::vec3 boundsMax, uint3
     const float voxel = largest / float(resolution - 2);
     const glm::vec3 centre = 0.5f * (boundsMin + boundsMax);
     const glm::vec3 origin = centre - 0.5f * voxel * float(resolution);
-    return {.minAndVoxelSize = glm::vec4(origin, voxel),
-            .dims = glm::uvec4(resolution, resolution, resolution, 0)};
+    return {.boxMin = origin, .voxelSize = voxel, .dims = glm::uvec3(resolution), .dimsPadding = 0};
 }
 
 VoxelLightingPass::VoxelLightingPass(rhi::IDevice& device, const gpu::VoxelGridInfo& grid,
@@ -59,10 +58,15 @@ void VoxelLightingPass::record(gi::FrameContext& frame, const AtlasSurfaceBindin
         frame.skip(kResolvePassName, "no tiles to inject");
         return;
     }
-    const gpu::VoxelInjectConstants constants{
-        .grid = grid_,
-        .atlas = {surfaces.atlas.size(), tiles.count(), tiles.tilesPerRow(), update},
-        .buriedProbeDistance = {buriedDistance_, 0.0f, 0.0f, 0.0f}};
+    const gpu::VoxelInjectConstants constants{.grid = grid_,
+                                              .atlasSize = surfaces.atlas.size(),
+                                              .tileCount = tiles.count(),
+                                              .tilesPerRow = tiles.tilesPerRow(),
+                                              .updateIndex = update,
+                                              .buriedProbeDistance = buriedDistance_,
+                                              .buriedPadding0 = 0.0f,
+                                              .buriedPadding1 = 0.0f,
+                                              .buriedPadding2 = 0.0f};
     sdf_.bindForTracing(frame.compute(kInjectPassName, "surface_cache/voxel_lighting.inject"))
         .constants(constants)
         .read(6, surfaces.atlas.final)

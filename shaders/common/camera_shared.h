@@ -13,30 +13,39 @@
 LUMINA_GPU_NAMESPACE_BEGIN
 
 struct GpuCamera {
-    float4 positionAndTanHalfFovY; // xyz: world position; w: tan(fovY / 2)
-    float4 forwardAndAspect;       // xyz: unit forward; w: width / height
-    float4 rightAndNear;           // xyz: unit right; w: near plane distance
-    float4 upAndFar;               // xyz: unit up, orthogonal to forward; w: far plane distance
-    float4 viewProjRows[4];        // clip = (dot(row0, p), dot(row1, p), dot(row2, p), dot(row3, p)), p = (world, 1)
-    float4 imageSize;              // x: width; y: height; z: 1 / width; w: 1 / height
+    float3 position; // world
+    float tanHalfFovY;
+    float3 forward; // unit
+    float aspect;   // width / height
+    float3 right;   // unit
+    float nearPlane;
+    float3 up; // unit, orthogonal to forward
+    float farPlane;
+    float4 viewProjRows[4]; // clip = (dot(row0, p), dot(row1, p), dot(row2, p), dot(row3, p)), p = (world, 1)
+    float2 imageSize;       // width, height in pixels
+    float2 invImageSize;    // 1 / width, 1 / height
 };
 
 LUMINA_STATIC_ASSERT_SIZE(GpuCamera, 144);
+LUMINA_STATIC_ASSERT_OFFSET(GpuCamera, forward, 16);
+LUMINA_STATIC_ASSERT_OFFSET(GpuCamera, right, 32);
+LUMINA_STATIC_ASSERT_OFFSET(GpuCamera, up, 48);
+LUMINA_STATIC_ASSERT_OFFSET(GpuCamera, viewProjRows, 64);
+LUMINA_STATIC_ASSERT_OFFSET(GpuCamera, imageSize, 128);
+LUMINA_STATIC_ASSERT_OFFSET(GpuCamera, invImageSize, 136);
 
 // The unit world-space direction through image position `pixel` (pixel centres at +0.5).
 LUMINA_INLINE float3 cameraRayDirection(GpuCamera camera, float2 pixel) {
-    const float ndcX = 2.0f * pixel.x * camera.imageSize.z - 1.0f;
-    const float ndcY = 1.0f - 2.0f * pixel.y * camera.imageSize.w;
-    const float tanHalf = camera.positionAndTanHalfFovY.w;
-    const float3 forward = float3(camera.forwardAndAspect.x, camera.forwardAndAspect.y, camera.forwardAndAspect.z);
-    const float3 right = float3(camera.rightAndNear.x, camera.rightAndNear.y, camera.rightAndNear.z);
-    const float3 up = float3(camera.upAndFar.x, camera.upAndFar.y, camera.upAndFar.z);
-    const float3 direction = forward + right * (ndcX * tanHalf * camera.forwardAndAspect.w) + up * (ndcY * tanHalf);
+    const float ndcX = 2.0f * pixel.x * camera.invImageSize.x - 1.0f;
+    const float ndcY = 1.0f - 2.0f * pixel.y * camera.invImageSize.y;
+    const float tanHalf = camera.tanHalfFovY;
+    const float3 direction =
+        camera.forward + camera.right * (ndcX * tanHalf * camera.aspect) + camera.up * (ndcY * tanHalf);
     return direction * (1.0f / sqrt(dot(direction, direction)));
 }
 
 LUMINA_INLINE float3 cameraPosition(GpuCamera camera) {
-    return float3(camera.positionAndTanHalfFovY.x, camera.positionAndTanHalfFovY.y, camera.positionAndTanHalfFovY.z);
+    return camera.position;
 }
 
 LUMINA_GPU_NAMESPACE_END

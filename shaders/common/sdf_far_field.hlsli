@@ -35,7 +35,7 @@ float sdfGlobalTexel(uint3 texel) {
 }
 
 uint sdfGlobalCascadeCount() {
-    return LUMINA_SDF_SCENE.globalDims.w;
+    return LUMINA_SDF_SCENE.cascadeCount;
 }
 
 // The finest cascade whose window holds p at least a voxel from its faces (so that trilinear
@@ -44,8 +44,8 @@ uint sdfGlobalCascadeAt(float3 p) {
     uint count = sdfGlobalCascadeCount();
     for (uint c = 0u; c + 1u < count; ++c) {
         SdfGlobalCascade cascade = LUMINA_SDF_SCENE.cascades[c];
-        float margin = cascade.minAndVoxelSize.w;
-        if (all(p >= cascade.minAndVoxelSize.xyz + margin) && all(p <= cascade.maxAndMaxDistance.xyz - margin)) {
+        float margin = cascade.voxelSize;
+        if (all(p >= cascade.boxMin + margin) && all(p <= cascade.boxMax - margin)) {
             return c;
         }
     }
@@ -53,7 +53,7 @@ uint sdfGlobalCascadeAt(float3 p) {
 }
 
 float sdfGlobalVoxelSize(uint cascade) {
-    return LUMINA_SDF_SCENE.cascades[cascade].minAndVoxelSize.w;
+    return LUMINA_SDF_SCENE.cascades[cascade].voxelSize;
 }
 
 // Voxel size of the cascade that serves p: the scale of the global SDF's detail (and error) there.
@@ -71,10 +71,10 @@ float sdfGlobalCascadeScaleAt(float3 p) {
 // lower bound, sqrt(d^2 + s^2), d the distance to the window and s the sample at its nearest point.
 float sdfSampleCascade(uint c, float3 p) {
     SdfGlobalCascade cascade = LUMINA_SDF_SCENE.cascades[c];
-    float3 boxMin = cascade.minAndVoxelSize.xyz;
-    float3 boxMax = cascade.maxAndMaxDistance.xyz;
-    float invVoxel = 1.0f / cascade.minAndVoxelSize.w;
-    uint3 dims = cascade.dims.xyz;
+    float3 boxMin = cascade.boxMin;
+    float3 boxMax = cascade.boxMax;
+    float invVoxel = 1.0f / cascade.voxelSize;
+    uint3 dims = cascade.dims;
     float3 inBox = clamp(p, boxMin, boxMax);
     // local lies in [0, dims - 1], so floor(local) is a voxel of the grid. Each value is cast to
     // one other type only (dims to float, the floored voxel to uint): vkd3d-shader merges two
@@ -87,12 +87,12 @@ float sdfSampleCascade(uint c, float3 p) {
     // Toroidal texels of base and next, (voxel + wrap) mod dims: both terms lie in [0, dims), so
     // one conditional subtraction does it, without an integer division per sample. With a single
     // cascade the wrap is 0: the texels are base and next themselves.
-    uint3 b = base + cascade.wrapAndSlab.xyz;
+    uint3 b = base + cascade.wrap;
     b = b >= dims ? b - dims : b;
-    uint3 n = next + cascade.wrapAndSlab.xyz;
+    uint3 n = next + cascade.wrap;
     n = n >= dims ? n - dims : n;
-    b.z += cascade.wrapAndSlab.w;
-    n.z += cascade.wrapAndSlab.w;
+    b.z += cascade.slabFirstZ;
+    n.z += cascade.slabFirstZ;
     float c00 = lerp(sdfGlobalTexel(uint3(b.x, b.y, b.z)), sdfGlobalTexel(uint3(n.x, b.y, b.z)), f.x);
     float c10 = lerp(sdfGlobalTexel(uint3(b.x, n.y, b.z)), sdfGlobalTexel(uint3(n.x, n.y, b.z)), f.x);
     float c01 = lerp(sdfGlobalTexel(uint3(b.x, b.y, n.z)), sdfGlobalTexel(uint3(n.x, b.y, n.z)), f.x);
@@ -117,11 +117,11 @@ float sdfSampleGlobal(float3 p) {
 // LUMINA_SDF_NO_HIT where nothing lies within the truncation distance.
 uint sdfGlobalInstanceAt(float3 p) {
     SdfGlobalCascade cascade = LUMINA_SDF_SCENE.cascades[sdfGlobalCascadeAt(p)];
-    float invVoxel = 1.0f / cascade.minAndVoxelSize.w;
-    float3 voxel = clamp(floor((p - cascade.minAndVoxelSize.xyz) * invVoxel), float3(0.0f, 0.0f, 0.0f),
-                         float3(cascade.dims.xyz - 1u));
-    uint3 texel = (uint3(voxel) + cascade.wrapAndSlab.xyz) % cascade.dims.xyz;
-    texel.z += cascade.wrapAndSlab.w;
+    float invVoxel = 1.0f / cascade.voxelSize;
+    float3 voxel = clamp(floor((p - cascade.boxMin) * invVoxel), float3(0.0f, 0.0f, 0.0f),
+                         float3(cascade.dims - 1u));
+    uint3 texel = (uint3(voxel) + cascade.wrap) % cascade.dims;
+    texel.z += cascade.slabFirstZ;
     float id = LUMINA_SDF_GLOBAL.Load(int4(int3(texel), 0)).y;
     return id >= 0.0f ? uint(id) : LUMINA_SDF_NO_HIT;
 }
@@ -155,8 +155,8 @@ SdfHit sdfGlobalHit(float3 origin, float3 direction, float t, uint steps, float 
 
 // The part [tStart, tEnd] of [tMin, maxDistance] inside the grid box; tStart > tEnd when none.
 float2 sdfGlobalSegment(float3 origin, float3 direction, float tMin, float maxDistance) {
-    float2 range = boxEntryExit(origin, safeReciprocal3(direction), LUMINA_SDF_SCENE.globalMinAndVoxelSize.xyz,
-                                LUMINA_SDF_SCENE.globalMaxAndMaxDistance.xyz);
+    float2 range = boxEntryExit(origin, safeReciprocal3(direction), LUMINA_SDF_SCENE.globalMin,
+                                LUMINA_SDF_SCENE.globalMax);
     return float2(max(range.x, tMin), min(range.y, maxDistance));
 }
 

@@ -70,7 +70,7 @@ void sdfTraceInstance(uint instanceIndex, float3 origin, float3 direction, float
     if (!(t <= tExit)) {
         return;
     }
-    float3 invAtlasDims = LUMINA_SDF_SCENE.invAtlasDims.xyz;
+    float3 invAtlasDims = LUMINA_SDF_SCENE.invAtlasDims;
     float voxel = volume.volumeMinAndVoxelSize.w;
     bool open = (volume.dims.w & LUMINA_SDF_VOLUME_OPEN) != 0u;
     float threshold = (open ? max(params.hitThresholdVoxels, LUMINA_SDF_OPEN_SURFACE_THRESHOLD_VOXELS)
@@ -110,7 +110,7 @@ void sdfTraceInstance(uint instanceIndex, float3 origin, float3 direction, float
 float3 sdfInstanceNormal(uint instanceIndex, float3 objectPoint) {
     SdfInstanceDesc instance = LUMINA_SDF_INSTANCE(instanceIndex);
     SdfVolumeDesc volume = LUMINA_SDF_VOLUME(instance.ids.x);
-    float3 invAtlasDims = LUMINA_SDF_SCENE.invAtlasDims.xyz;
+    float3 invAtlasDims = LUMINA_SDF_SCENE.invAtlasDims;
     float h = LUMINA_SDF_GRADIENT_STEP_VOXELS * volume.volumeMinAndVoxelSize.w;
     float3 g;
     g.x = sdfSampleVolume(volume, invAtlasDims, objectPoint + float3(h, 0.0f, 0.0f)) -
@@ -131,7 +131,7 @@ SdfHit sdfTraceNearField(float3 origin, float3 direction, float tMin, SdfTracePa
     state.instance = LUMINA_SDF_NO_HIT;
     state.objectPoint = float3(0.0f, 0.0f, 0.0f);
     state.steps = 0u;
-    if (LUMINA_SDF_SCENE.counts.y != 0u) {
+    if (LUMINA_SDF_SCENE.instanceBvhNodeCount != 0u) {
         float3 invDir = safeReciprocal3(direction);
         uint stackNode[LUMINA_SDF_INSTANCE_STACK_SIZE];
         float stackEntry[LUMINA_SDF_INSTANCE_STACK_SIZE];

@@ -40,25 +40,38 @@ struct SdfInstanceDesc {
 // toroidally in its slab of the global SDF texture (slab c: z texels [c * dims.z, (c + 1) * dims.z)).
 // A scene with one cascade has the scene-fitted grid: lattice origin = window corner, window 0.
 struct SdfGlobalCascade {
-    float4 minAndVoxelSize;       // xyz: world corner of the window (its voxel (0,0,0)); w: voxel size
-    float4 maxAndMaxDistance;     // xyz: far corner of the window; w: truncation distance
-    float4 latticeOriginAndShell; // xyz: world corner of lattice voxel (0,0,0); w: what open instances'
-                                  // shells (SdfInstanceDesc::worldMax.w, sized for cascade 0) grow by here
-    uint4 window;                 // xyz: lattice voxel at the window's corner, int bits (asint); w: 0
-    uint4 wrapAndSlab; // xyz: texel of window voxel (0,0,0), window mod dims; w: first z texel of the slab
-    uint4 dims;        // xyz: voxels per axis; w: 0
+    float3 boxMin; // world corner of the window (its voxel (0,0,0))
+    float voxelSize;
+    float3 boxMax;        // far corner of the window
+    float maxDistance;    // truncation distance
+    float3 latticeOrigin; // world corner of lattice voxel (0,0,0)
+    float openShellExtra; // what open instances' shells (SdfInstanceDesc::worldMax.w, sized for
+                          // cascade 0) grow by here
+    uint3 window;         // lattice voxel at the window's corner, int bits (asint)
+    uint windowPadding;
+    uint3 wrap;      // texel of window voxel (0,0,0): window mod dims
+    uint slabFirstZ; // first z texel of the cascade's slab
+    uint3 dims;      // voxels per axis
+    uint dimsPadding;
 };
 
 // Facts every kernel that traces the scene's SDFs needs, in one constant buffer. The global*
 // fields describe the cascades together: the box is their union, the voxel size and
 // truncation the finest cascade's (for a single cascade: the grid's own).
 struct SdfSceneInfo {
-    float4 invAtlasDims;            // xyz: 1 / atlas texels per axis; w: 0
-    float4 globalMinAndVoxelSize;   // xyz: world corner of the cascades' union; w: finest voxel size
-    float4 globalMaxAndMaxDistance; // xyz: far corner of the union; w: finest truncation distance
-    uint4 globalDims;               // xyz: voxels per axis of every cascade; w: cascade count
-    uint4 counts;                   // x: instances; y: instance BVH nodes; z: volumes; w: 0
-    SdfGlobalCascade cascades[LUMINA_SDF_MAX_CASCADES]; // finest first; globalDims.w of them are used
+    float3 invAtlasDims; // 1 / atlas texels per axis
+    float invAtlasDimsPadding;
+    float3 globalMin;        // world corner of the cascades' union
+    float globalVoxelSize;   // the finest cascade's
+    float3 globalMax;        // far corner of the union
+    float globalMaxDistance; // the finest cascade's truncation distance
+    uint3 globalDims;        // voxels per axis of every cascade
+    uint cascadeCount;
+    uint instanceCount;
+    uint instanceBvhNodeCount;
+    uint volumeCount;
+    uint countsPadding;
+    SdfGlobalCascade cascades[LUMINA_SDF_MAX_CASCADES]; // finest first; cascadeCount of them are used
 };
 
 // Defaults of SdfTraceParams, after the thesis (at most 64 steps) and the CPU reference
@@ -103,7 +116,17 @@ struct GlobalSdfComposeConstants {
 
 LUMINA_STATIC_ASSERT_SIZE(SdfInstanceDesc, 144);
 LUMINA_STATIC_ASSERT_SIZE(SdfGlobalCascade, 96);
+LUMINA_STATIC_ASSERT_OFFSET(SdfGlobalCascade, boxMax, 16);
+LUMINA_STATIC_ASSERT_OFFSET(SdfGlobalCascade, latticeOrigin, 32);
+LUMINA_STATIC_ASSERT_OFFSET(SdfGlobalCascade, window, 48);
+LUMINA_STATIC_ASSERT_OFFSET(SdfGlobalCascade, wrap, 64);
+LUMINA_STATIC_ASSERT_OFFSET(SdfGlobalCascade, dims, 80);
 LUMINA_STATIC_ASSERT_SIZE(SdfSceneInfo, 80 + 96 * LUMINA_SDF_MAX_CASCADES);
+LUMINA_STATIC_ASSERT_OFFSET(SdfSceneInfo, globalMin, 16);
+LUMINA_STATIC_ASSERT_OFFSET(SdfSceneInfo, globalMax, 32);
+LUMINA_STATIC_ASSERT_OFFSET(SdfSceneInfo, globalDims, 48);
+LUMINA_STATIC_ASSERT_OFFSET(SdfSceneInfo, instanceCount, 64);
+LUMINA_STATIC_ASSERT_OFFSET(SdfSceneInfo, cascades, 80);
 LUMINA_STATIC_ASSERT_SIZE(SdfTraceParams, 16);
 LUMINA_STATIC_ASSERT_SIZE(SdfHit, 48);
 LUMINA_STATIC_ASSERT_SIZE(GlobalSdfBrick, 16);

@@ -11,20 +11,23 @@
 //   LUMINA_PRECISE                      HLSL `precise` (no FMA contraction); nothing in C++, where
 //                                       ISO mode (-std=c++20) already keeps a*b-c*d uncontracted
 //   LUMINA_STATIC_ASSERT_SIZE(T, n)     checks sizeof(T) == n and 16-byte alignment in C++ only
+//   LUMINA_STATIC_ASSERT_OFFSET(T, m, n) checks that member m of T starts at byte n, in C++ only
 //   luminaReverseBits(v)                reversebits for C++; with LUMINA_DXBC (vkd3d-shader), isnan
 //                                       and reversebits themselves are defined at the end
 //
-// Rules for shared structs (docs/architecture.md, "Shared structs"): float4/uint4 members only (16-byte
-// aligned, identical under std430 and D3D structured-buffer packing), uint instead of bool,
-// no matrices. Shared functions avoid swizzles (glm has none without GLM_FORCE_SWIZZLE) and
+// Rules for shared structs (docs/architecture.md, "Shared structs"): members fill whole 16-byte rows
+// (a 4-vector; a 3-vector and a scalar; a 2-vector and two scalars or a 2-vector; four scalars),
+// a vector starts its row, unused lanes are named padding members, so std140/std430 (glslang,
+// DXC), D3D's cbuffer and structured-buffer packing (vkd3d, DXC) and C++ agree; uint instead of
+// bool, no matrices. Shared functions avoid swizzles (glm has none without GLM_FORCE_SWIZZLE) and
 // use only the intrinsics mirrored here.
 
 #ifdef __cplusplus
 
 #include <bit>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
-
 #include <glm/glm.hpp>
 
 #define LUMINA_GPU_NAMESPACE_BEGIN namespace lumina::gpu {
@@ -34,9 +37,11 @@
 #define LUMINA_INOUT(T) T&
 #define LUMINA_PRECISE
 #define LUMINA_UNROLL
-#define LUMINA_STATIC_ASSERT_SIZE(T, n)                                                                     \
-    static_assert(sizeof(T) == (n), #T ": size must match the HLSL layout");                                \
+#define LUMINA_STATIC_ASSERT_SIZE(T, n)                                                                      \
+    static_assert(sizeof(T) == (n), #T ": size must match the HLSL layout");                                 \
     static_assert(sizeof(T) % 16 == 0, #T ": GPU structs are 16-byte multiples")
+#define LUMINA_STATIC_ASSERT_OFFSET(T, member, n)                                                            \
+    static_assert(offsetof(T, member) == (n), #T "::" #member ": offset must match the HLSL layout")
 
 namespace lumina::gpu {
 
@@ -49,8 +54,12 @@ using uint3 = glm::uvec3;
 using uint4 = glm::uvec4;
 using int3 = glm::ivec3;
 
-inline uint asuint(float x) { return std::bit_cast<uint>(x); }
-inline float asfloat(uint x) { return std::bit_cast<float>(x); }
+inline uint asuint(float x) {
+    return std::bit_cast<uint>(x);
+}
+inline float asfloat(uint x) {
+    return std::bit_cast<float>(x);
+}
 using glm::abs;
 using glm::cross;
 using glm::dot;
@@ -70,6 +79,7 @@ using std::sqrt;
 #define LUMINA_PRECISE precise
 #define LUMINA_UNROLL [unroll]
 #define LUMINA_STATIC_ASSERT_SIZE(T, n)
+#define LUMINA_STATIC_ASSERT_OFFSET(T, member, n)
 
 #endif
 

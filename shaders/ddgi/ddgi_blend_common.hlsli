@@ -16,16 +16,16 @@ groupshared uint gsProbeState;
 // out of range. `threads`: the group's size.
 bool loadProbeRays(uint probe, uint thread, uint threads) {
     if (thread == 0u) {
-        gsProbeState = probe < gDdgi.rays.w ? uint(gProbes[probe].offsetAndState.w) : 2u;
+        gsProbeState = probe < gDdgi.probeCount ? uint(gProbes[probe].offsetAndState.w) : 2u;
     }
     GroupMemoryBarrierWithGroupSync();
     if (gsProbeState == uint(LUMINA_DDGI_PROBE_INACTIVE)) {
         return false;
     }
-    const uint fixedRays = gDdgi.rays.y;
-    for (uint r = fixedRays + thread; r < gDdgi.rays.x; r += threads) {
+    const uint fixedRays = gDdgi.fixedRays;
+    for (uint r = fixedRays + thread; r < gDdgi.raysPerProbe; r += threads) {
         gsRayDirection[r - fixedRays] = float4(ddgiRayDirection(r), 0.0);
-        gsRayData[r - fixedRays] = gRayData[probe * gDdgi.rays.x + r];
+        gsRayData[r - fixedRays] = gRayData[probe * gDdgi.raysPerProbe + r];
     }
     GroupMemoryBarrierWithGroupSync();
     return true;
@@ -41,19 +41,19 @@ struct BlendTexel {
 // Loads probe `probe`'s rays for a group of n x n threads (thread t: texel t % n, t / n); false
 // for the whole group when the probe is inactive.
 bool beginBlend(uint probe, uint t, uint n, out BlendTexel texel) {
-    texel.ref = ddgiProbeRef(min(probe, gDdgi.rays.w - 1u));
+    texel.ref = ddgiProbeRef(min(probe, gDdgi.probeCount - 1u));
     texel.local = uint2(t % n, t / n);
     texel.direction = octDecode(octTexelCentre(texel.local.x, texel.local.y, n));
     return loadProbeRays(probe, t, n * n);
 }
 
 uint blendedRayCount() {
-    return gDdgi.rays.x - gDdgi.rays.y;
+    return gDdgi.raysPerProbe - gDdgi.fixedRays;
 }
 
 // The share of history kept: none for a fresh probe, else the hysteresis.
 float blendHysteresis() {
-    return gsProbeState == uint(LUMINA_DDGI_PROBE_FRESH) ? 0.0 : gDdgi.blend.x;
+    return gsProbeState == uint(LUMINA_DDGI_PROBE_FRESH) ? 0.0 : gDdgi.hysteresis;
 }
 
 // Border texel b of an n x n tile with its border (false past the last, 4n + 3): its position in

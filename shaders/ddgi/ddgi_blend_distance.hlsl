@@ -24,12 +24,12 @@ groupshared float2 gsTexel[N * N];
         return;
     }
     const DdgiVolumeInfo volume = gDdgi.volumes[texel.ref.volume];
-    const float unit = volume.originAndUnit.w;
+    const float unit = volume.distanceUnit;
     const float3 d = texel.direction;
     float2 sum = float2(0.0, 0.0);
     float weight = 0.0;
     for (uint r = 0u; r < blendedRayCount(); ++r) {
-        const float w = pow(max(0.0, dot(d, gsRayDirection[r].xyz)), gDdgi.blend.w);
+        const float w = pow(max(0.0, dot(d, gsRayDirection[r].xyz)), gDdgi.distanceSharpness);
         const float signedDistance = gsRayData[r].a;
         const float distance =
             (signedDistance < 0.0 ? -LUMINA_DDGI_BACKFACE_DISTANCE_SCALE * signedDistance : signedDistance) /

@@ -49,8 +49,8 @@ float maxComponent(float3 v) {
     // taking that at the lowered hysteresis left blotches on the Cornell box's floor (relMSE
     // 0.080 against 0.017 a few updates earlier, docs/ddgi.md). Light that appears comes in at
     // the normal rate.
-    if (gDdgi.blend.z * maxComponent(fresh) < maxComponent(previous)) {
-        hysteresis = min(hysteresis, gDdgi.blend.y);
+    if (gDdgi.largeChangeRatio * maxComponent(fresh) < maxComponent(previous)) {
+        hysteresis = min(hysteresis, gDdgi.changedHysteresis);
     }
     // A fresh probe's stored texels are whatever the atlas held (NaN included): not read at all.
     const float3 e = ddgiSanitise(hysteresis > 0.0 ? lerp(fresh, previous, hysteresis) : fresh);

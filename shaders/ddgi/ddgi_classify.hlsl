@@ -17,9 +17,9 @@
     }
     const float state = p.offsetAndState.w;
     bool inactive = false;
-    if (gDdgi.bias.w != 0.0) {
+    if (gDdgi.classification != 0u) {
         const DdgiProbeRef ref = ddgiProbeRef(probe);
-        const DdgiFixedRayStats s = fixedRayStats(probe, gDdgi.volumes[ref.volume].spacing.xyz);
+        const DdgiFixedRayStats s = fixedRayStats(probe, gDdgi.volumes[ref.volume].spacing);
         inactive = probeInsideGeometry(s) || !s.surfaceInCells;
     }
     if (inactive) {

@@ -12,16 +12,16 @@ struct DdgiProbeRef {
     uint local;  // probe index inside the volume
 };
 
-// The volume holding global probe `probe` (< gDdgi.rays.w).
+// The volume holding global probe `probe` (< gDdgi.probeCount).
 DdgiProbeRef ddgiProbeRef(uint probe) {
     DdgiProbeRef ref;
     ref.volume = 0u;
-    for (uint v = 1u; v < gDdgi.rays.z; ++v) {
-        if (probe >= gDdgi.volumes[v].counts.w) {
+    for (uint v = 1u; v < gDdgi.volumeCount; ++v) {
+        if (probe >= gDdgi.volumes[v].firstProbe) {
             ref.volume = v;
         }
     }
-    ref.local = probe - gDdgi.volumes[ref.volume].counts.w;
+    ref.local = probe - gDdgi.volumes[ref.volume].firstProbe;
     return ref;
 }
 
@@ -36,11 +36,11 @@ float3 ddgiProbePosition(DdgiProbeRef ref, DdgiProbe probe) {
 // set under this update's random rotation (a fresh one each update, so that the blended history
 // sees ever new directions).
 float3 ddgiRayDirection(uint ray) {
-    const uint fixedRays = gDdgi.rays.y;
+    const uint fixedRays = gDdgi.fixedRays;
     if (ray < fixedRays) {
         return ddgiFibonacciDirection(ray, fixedRays);
     }
-    const float3 d = ddgiFibonacciDirection(ray - fixedRays, gDdgi.rays.x - fixedRays);
+    const float3 d = ddgiFibonacciDirection(ray - fixedRays, gDdgi.raysPerProbe - fixedRays);
     return float3(dot(gDdgi.rotation[0].xyz, d), dot(gDdgi.rotation[1].xyz, d),
                   dot(gDdgi.rotation[2].xyz, d));
 }

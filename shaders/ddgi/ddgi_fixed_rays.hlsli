@@ -1,6 +1,6 @@
 #ifndef LUMINA_DDGI_FIXED_RAYS_HLSLI
 #define LUMINA_DDGI_FIXED_RAYS_HLSLI
-// What relocation and classification read of a probe's fixed rays (the first gDdgi.rays.y, in
+// What relocation and classification read of a probe's fixed rays (the first gDdgi.fixedRays, in
 // the same directions every update): how many hit a back face, the nearest front face, and
 // whether any surface lies within the probe's cells; and the bindings the two passes share: this
 // update's rays (t6; relocation binds the SDF scene below it) and the probes they rewrite (u0).
@@ -12,7 +12,7 @@ RWStructuredBuffer<DdgiProbe> gProbes : register(u0);
 // The probe of a one-thread-per-probe dispatch; false past the last probe.
 bool threadProbe(uint3 id, out DdgiProbe p) {
     p.offsetAndState = float4(0.0, 0.0, 0.0, 0.0);
-    if (id.x >= gDdgi.rays.w) {
+    if (id.x >= gDdgi.probeCount) {
         return false;
     }
     p = gProbes[id.x];
@@ -29,11 +29,11 @@ struct DdgiFixedRayStats {
 DdgiFixedRayStats fixedRayStats(uint probe, float3 spacing) {
     DdgiFixedRayStats s;
     s.backfaces = 0u;
-    s.closestFront = gDdgi.trace.y;
+    s.closestFront = gDdgi.maxTraceDistance;
     s.closestFrontDirection = float3(0.0, 0.0, 1.0);
     s.surfaceInCells = false;
-    for (uint r = 0u; r < gDdgi.rays.y; ++r) {
-        const float signedDistance = gRayData[probe * gDdgi.rays.x + r].a;
+    for (uint r = 0u; r < gDdgi.fixedRays; ++r) {
+        const float signedDistance = gRayData[probe * gDdgi.raysPerProbe + r].a;
         const float3 direction = ddgiRayDirection(r);
         const float distance = abs(signedDistance);
         if (signedDistance < 0.0) {
@@ -42,7 +42,7 @@ DdgiFixedRayStats fixedRayStats(uint probe, float3 spacing) {
             s.closestFront = distance;
             s.closestFrontDirection = direction;
         }
-        if (distance < gDdgi.trace.y && all(abs(direction * distance) <= spacing)) {
+        if (distance < gDdgi.maxTraceDistance && all(abs(direction * distance) <= spacing)) {
             s.surfaceInCells = true;
         }
     }
@@ -51,7 +51,7 @@ DdgiFixedRayStats fixedRayStats(uint probe, float3 spacing) {
 
 // More than the backface fraction of the fixed rays left from inside a surface.
 bool probeInsideGeometry(DdgiFixedRayStats s) {
-    return float(s.backfaces) > gDdgi.trace.z * float(gDdgi.rays.y);
+    return float(s.backfaces) > gDdgi.backfaceFraction * float(gDdgi.fixedRays);
 }
 
 #endif

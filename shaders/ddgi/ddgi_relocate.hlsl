@@ -20,15 +20,15 @@
     if (!threadProbe(id, p)) {
         return;
     }
-    if (gDdgi.bias.z == 0.0) {
+    if (gDdgi.relocation == 0u) {
         p.offsetAndState.xyz = float3(0.0, 0.0, 0.0);
         gProbes[probe] = p;
         return;
     }
     const DdgiProbeRef ref = ddgiProbeRef(probe);
     const DdgiVolumeInfo volume = gDdgi.volumes[ref.volume];
-    const float3 spacing = volume.spacing.xyz;
-    const float allowed = gDdgi.trace.w * min(spacing.x, min(spacing.y, spacing.z));
+    const float3 spacing = volume.spacing;
+    const float allowed = gDdgi.minFrontfaceDistance * min(spacing.x, min(spacing.y, spacing.z));
     const DdgiFixedRayStats s = fixedRayStats(probe, spacing);
     float3 offset = p.offsetAndState.xyz;
     if (probeInsideGeometry(s)) {
@@ -38,7 +38,7 @@
     } else if (s.closestFront < allowed) {
         offset -= s.closestFrontDirection * (allowed - s.closestFront);
     }
-    const float3 limit = volume.spacing.w * spacing;
+    const float3 limit = volume.maxOffset * spacing;
     p.offsetAndState.xyz = clamp(offset, -limit, limit);
     gProbes[probe] = p;
 }

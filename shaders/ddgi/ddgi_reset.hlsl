@@ -9,17 +9,17 @@
 RWStructuredBuffer<DdgiProbe> gProbes : register(u0);
 
 bool entered(DdgiVolumeInfo v, uint3 lattice) {
-    return any(lattice >= v.enteredMin.xyz && lattice < v.enteredMax.xyz);
+    return any(lattice >= v.enteredMin && lattice < v.enteredMax);
 }
 
 [numthreads(LUMINA_DDGI_PROBE_GROUP, 1, 1)] void main(uint3 id : SV_DispatchThreadID) {
-    if (id.x >= gDdgi.rays.w) {
+    if (id.x >= gDdgi.probeCount) {
         return;
     }
     const DdgiProbeRef ref = ddgiProbeRef(id.x);
     const DdgiVolumeInfo v = gDdgi.volumes[ref.volume];
     const uint3 lattice = ddgiLatticeOfSlot(v, ddgiProbeCoord(ref.local, v.counts));
-    if ((v.atlas.z & LUMINA_DDGI_VOLUME_RESET) != 0u || entered(v, lattice)) {
+    if ((v.flags & LUMINA_DDGI_VOLUME_RESET) != 0u || entered(v, lattice)) {
         DdgiProbe p;
         p.offsetAndState = float4(0.0, 0.0, 0.0, LUMINA_DDGI_PROBE_FRESH);
         gProbes[id.x] = p;

@@ -49,7 +49,7 @@ float3 probeIrradiance(uint2 tile, float3 n) {
 // Mean and mean squared distance (in the volume's unit) towards direction d.
 float2 probeDistance(uint2 tile, float3 d) {
     const float2 texel = float2(tile) + 1.0 + (octEncode(d) * 0.5 + 0.5) * float(LUMINA_DDGI_DISTANCE_SIZE);
-    return gDistance.SampleLevel(gLinearClamp, texel / float2(gDdgi.atlasSize.zw), 0.0);
+    return gDistance.SampleLevel(gLinearClamp, texel / float2(gDdgi.distanceAtlasSize), 0.0);
 }
 
 // rgb: E at p (normal n, unit vector v towards the camera) from volume v; a: the summed weight (0:
@@ -58,9 +58,9 @@ float4 sampleVolume(uint v, float3 p, float3 n, float3 towardsCamera) {
     const DdgiVolumeInfo volume = gDdgi.volumes[v];
     // Biases are fractions of the volume's smallest spacing: each cascade biases by its own cells.
     const float cell = min(volume.spacing.x, min(volume.spacing.y, volume.spacing.z));
-    const float3 q = p + cell * (gDdgi.bias.x * n + gDdgi.bias.y * towardsCamera);
-    const int3 last = int3(volume.counts.xyz) - 1;
-    const float3 grid = (p - volume.originAndUnit.xyz) / volume.spacing.xyz;
+    const float3 q = p + cell * (gDdgi.normalBias * n + gDdgi.viewBias * towardsCamera);
+    const int3 last = int3(volume.counts) - 1;
+    const float3 grid = (p - volume.origin) / volume.spacing;
     const int3 base = clamp(int3(floor(grid)), int3(0, 0, 0), max(last - 1, int3(0, 0, 0)));
     const float3 alpha = saturate(grid - float3(base));
     float3 sum = float3(0.0, 0.0, 0.0);
@@ -69,7 +69,7 @@ float4 sampleVolume(uint v, float3 p, float3 n, float3 towardsCamera) {
         const int3 offset = int3(corner & 1u, (corner >> 1) & 1u, corner >> 2);
         const uint3 c = uint3(min(base + offset, last));
         const uint local = ddgiProbeIndex(ddgiSlotOfLattice(volume, c), volume.counts);
-        const DdgiProbe probe = gProbes[volume.counts.w + local];
+        const DdgiProbe probe = gProbes[volume.firstProbe + local];
         if (ddgiProbeInactive(probe)) {
             continue;
         }
@@ -82,9 +82,9 @@ float4 sampleVolume(uint v, float3 p, float3 n, float3 towardsCamera) {
         float weight = wrap * wrap + LUMINA_DDGI_WRAP_FLOOR;
 
         const float3 probeToPoint = q - probePosition;
-        const float r = length(probeToPoint) / volume.originAndUnit.w;
+        const float r = length(probeToPoint) / volume.distanceUnit;
         const float2 moments = probeDistance(ddgiTileOrigin(volume, local, LUMINA_DDGI_DISTANCE_TILE),
-                                             r > 0.0 ? probeToPoint / (r * volume.originAndUnit.w) : n);
+                                             r > 0.0 ? probeToPoint / (r * volume.distanceUnit) : n);
         if (r > moments.x) {
             const float variance = abs(moments.y - moments.x * moments.x);
             const float excess = r - moments.x;
@@ -106,12 +106,12 @@ float4 sampleVolume(uint v, float3 p, float3 n, float3 towardsCamera) {
 // falling to 0 across the outer half cell so the next volume takes over smoothly; the coarsest
 // volume holds everything (points outside it read its boundary probes).
 float volumeCoverage(uint v, float3 p) {
-    if (v + 1u == gDdgi.rays.z) {
+    if (v + 1u == gDdgi.volumeCount) {
         return 1.0;
     }
     const DdgiVolumeInfo volume = gDdgi.volumes[v];
-    const float3 grid = (p - volume.originAndUnit.xyz) / volume.spacing.xyz;
-    const float3 last = float3(volume.counts.xyz) - 1.0;
+    const float3 grid = (p - volume.origin) / volume.spacing;
+    const float3 last = float3(volume.counts) - 1.0;
     // Cells from the lattice's edge: negative inside; 0.5 at the grown box's edge.
     const float3 outside = max(-grid, grid - last);
     const float worst = max(outside.x, max(outside.y, outside.z));
@@ -119,7 +119,7 @@ float volumeCoverage(uint v, float3 p) {
 }
 
 [numthreads(LUMINA_DDGI_SAMPLE_GROUP, LUMINA_DDGI_SAMPLE_GROUP, 1)] void main(uint3 id : SV_DispatchThreadID) {
-    if (id.x >= gDdgi.screen.x || id.y >= gDdgi.screen.y) {
+    if (id.x >= gDdgi.imageSize.x || id.y >= gDdgi.imageSize.y) {
         return;
     }
     const float4 normal = gNormal.Load(int3(id.xy, 0));
@@ -130,10 +130,10 @@ float volumeCoverage(uint v, float3 p) {
     }
     const float3 n = normalize(normal.xyz);
     const float3 p = position.xyz;
-    const float3 towardsCamera = normalize(gDdgi.camera.xyz - p);
+    const float3 towardsCamera = normalize(gDdgi.cameraPosition - p);
     float3 irradiance = float3(0.0, 0.0, 0.0);
     float remaining = 1.0;
-    for (uint v = 0u; v < gDdgi.rays.z && remaining > 0.0; ++v) {
+    for (uint v = 0u; v < gDdgi.volumeCount && remaining > 0.0; ++v) {
         const float coverage = volumeCoverage(v, p);
         if (coverage <= 0.0) {
             continue;

@@ -3,11 +3,11 @@
 // DDGI probe volumes (docs/ddgi.md), shared by C++ (gi/ddgi/, tests) and HLSL (shaders/ddgi/).
 //
 // Every volume of a technique lives in one set of buffers and atlases: probe p of volume v has
-// the global index volumes[v].counts.w + p, with p = x + counts.x * (y + counts.y * z). Its
+// the global index volumes[v].firstProbe + p, with p = x + counts.x * (y + counts.y * z). Its
 // octahedral tiles sit in the atlases at column p % (counts.x * counts.y) and row
-// volumes[v].atlas.y + p / (counts.x * counts.y): one row of tiles per z plane.
-#include "../common/shared_types.h"
+// volumes[v].firstTileRow + p / (counts.x * counts.y): one row of tiles per z plane.
 #include "../common/constants_shared.h"
+#include "../common/shared_types.h"
 #include "../surface_cache/surface_cache_lighting_shared.h"
 
 #ifdef __cplusplus
@@ -49,7 +49,7 @@ LUMINA_GPU_NAMESPACE_BEGIN
 #define LUMINA_DDGI_PROBE_ACTIVE 1.0f   // active, with history
 #define LUMINA_DDGI_PROBE_INACTIVE 2.0f // classified off: only its fixed rays are traced, never blended
 
-// Per-volume flags (DdgiVolumeInfo.atlas.z).
+// Per-volume flags (DdgiVolumeInfo::flags).
 #define LUMINA_DDGI_VOLUME_RESET 1u // the reset pass returns all its probes to FRESH at offset 0
 
 struct DdgiProbe {
@@ -58,39 +58,78 @@ struct DdgiProbe {
 LUMINA_STATIC_ASSERT_SIZE(DdgiProbe, 16);
 
 struct DdgiVolumeInfo {
-    float4 originAndUnit; // xyz: world position of lattice point (0, 0, 0); w: distance unit
-                          // (largest spacing)
-    float4 spacing;       // xyz: world distance between lattice points; w: max offset (fraction of a cell)
-    uint4 counts;         // xyz: probes per axis; w: global index of the volume's first probe
-    uint4 atlas;          // x: tiles per atlas row (counts.x * counts.y); y: first tile row;
-                          // z: LUMINA_DDGI_VOLUME_*; w: probes
+    float3 origin;      // world position of lattice point (0, 0, 0)
+    float distanceUnit; // the largest spacing: stored distances are in these units
+    float3 spacing;     // world distance between lattice points
+    float maxOffset;    // how far relocation may move a probe (fraction of a cell per axis)
+    uint3 counts;       // probes per axis
+    uint firstProbe;    // global index of the volume's first probe
+    uint tilesPerRow;   // atlas tiles per row (counts.x * counts.y)
+    uint firstTileRow;  // the volume's first row of atlas tiles
+    uint flags;         // LUMINA_DDGI_VOLUME_*
+    uint probeCount;    // counts.x * counts.y * counts.z
     // A cascade scrolls with the camera: lattice point c (its place, from the volume's origin) is
     // stored in probe slot (c + scroll) mod counts, so a move by whole cells keeps every probe
     // that stays inside where it is. Those whose lattice coordinate on some axis lies in
     // [enteredMin, enteredMax) of that axis entered the volume with this update's move and are
     // reset (enteredMin = enteredMax: none on that axis).
-    uint4 scroll;     // xyz: slot offset; w: 0
-    uint4 enteredMin; // xyz; w: 0
-    uint4 enteredMax; // xyz; w: 0
+    uint3 scroll; // slot offset
+    uint scrollPadding;
+    uint3 enteredMin;
+    uint enteredMinPadding;
+    uint3 enteredMax;
+    uint enteredMaxPadding;
 };
 LUMINA_STATIC_ASSERT_SIZE(DdgiVolumeInfo, 112);
+LUMINA_STATIC_ASSERT_OFFSET(DdgiVolumeInfo, spacing, 16);
+LUMINA_STATIC_ASSERT_OFFSET(DdgiVolumeInfo, counts, 32);
+LUMINA_STATIC_ASSERT_OFFSET(DdgiVolumeInfo, tilesPerRow, 48);
+LUMINA_STATIC_ASSERT_OFFSET(DdgiVolumeInfo, scroll, 64);
+LUMINA_STATIC_ASSERT_OFFSET(DdgiVolumeInfo, enteredMin, 80);
+LUMINA_STATIC_ASSERT_OFFSET(DdgiVolumeInfo, enteredMax, 96);
 
 struct DdgiConstants {
     DdgiVolumeInfo volumes[LUMINA_DDGI_MAX_VOLUMES];
     float4 rotation[3]; // rows of this update's random rotation of the blended rays
-    uint4 rays;         // x: rays per probe; y: fixed rays; z: volumes; w: probes over every volume
-    float4 trace;       // x: near-field distance; y: max trace distance; z: backface fraction that
-                        // marks a probe inside geometry; w: closest front face allowed (fraction of a cell)
-    float4 blend;       // x: hysteresis; y: hysteresis after a large fall; z: ratio that is a large
-                        // change; w: distance weight sharpness (exponent of the cosine)
-    float4 bias;        // x: normal bias; y: view bias (fractions of a volume's smallest spacing);
-                        // z: 1 relocation on; w: 1 classification on
-    uint4 atlasSize;    // xy: irradiance atlas texels; zw: distance atlas texels
-    float4 camera;      // xyz: camera position (view bias); w: 0
-    uint4 screen;       // xy: image size; zw: 0
+    // Rays and probes.
+    uint raysPerProbe;
+    uint fixedRays; // the first rays of every probe, never rotated (classification, relocation)
+    uint volumeCount;
+    uint probeCount; // over every volume
+    // Tracing (world distances unless said).
+    float nearFieldDistance;
+    float maxTraceDistance;
+    float backfaceFraction;     // of the fixed rays: more back-face hits marks a probe inside geometry
+    float minFrontfaceDistance; // closest front face allowed (fraction of a cell)
+    // Blending.
+    float hysteresis;
+    float changedHysteresis; // hysteresis after a large change
+    float largeChangeRatio;  // ratio between old and new that is a large change
+    float distanceSharpness; // exponent of the cosine weighting distances
+    // Sampling and probe maintenance.
+    float normalBias;          // fraction of a volume's smallest spacing
+    float viewBias;            // fraction of a volume's smallest spacing
+    uint relocation;           // 1: relocation on
+    uint classification;       // 1: classification on
+    uint2 irradianceAtlasSize; // texels
+    uint2 distanceAtlasSize;   // texels
+    float3 cameraPosition;     // view bias
+    float cameraPadding;
+    uint2 imageSize;
+    uint imagePadding0;
+    uint imagePadding1;
     VoxelGridInfo voxelGrid; // the surface cache's voxel lighting, for hits no card owns
 };
 LUMINA_STATIC_ASSERT_SIZE(DdgiConstants, 4 * 112 + 3 * 16 + 7 * 16 + 32);
+LUMINA_STATIC_ASSERT_OFFSET(DdgiConstants, raysPerProbe, 4 * 112 + 3 * 16);
+LUMINA_STATIC_ASSERT_OFFSET(DdgiConstants, nearFieldDistance, 4 * 112 + 4 * 16);
+LUMINA_STATIC_ASSERT_OFFSET(DdgiConstants, hysteresis, 4 * 112 + 5 * 16);
+LUMINA_STATIC_ASSERT_OFFSET(DdgiConstants, normalBias, 4 * 112 + 6 * 16);
+LUMINA_STATIC_ASSERT_OFFSET(DdgiConstants, irradianceAtlasSize, 4 * 112 + 7 * 16);
+LUMINA_STATIC_ASSERT_OFFSET(DdgiConstants, distanceAtlasSize, 4 * 112 + 7 * 16 + 8);
+LUMINA_STATIC_ASSERT_OFFSET(DdgiConstants, cameraPosition, 4 * 112 + 8 * 16);
+LUMINA_STATIC_ASSERT_OFFSET(DdgiConstants, imageSize, 4 * 112 + 9 * 16);
+LUMINA_STATIC_ASSERT_OFFSET(DdgiConstants, voxelGrid, 4 * 112 + 10 * 16);
 
 // Unit direction k of n spread over the sphere on a spherical Fibonacci spiral: z steps evenly
 // from 1 to -1 (equal areas), the azimuth turns by the golden angle.
@@ -103,34 +142,32 @@ LUMINA_INLINE float3 ddgiFibonacciDirection(uint k, uint n) {
 }
 
 // Slot coordinates of probe p (local to its volume).
-LUMINA_INLINE uint3 ddgiProbeCoord(uint p, uint4 counts) {
+LUMINA_INLINE uint3 ddgiProbeCoord(uint p, uint3 counts) {
     const uint plane = counts.x * counts.y;
     return uint3(p % counts.x, (p % plane) / counts.x, p / plane);
 }
 
-LUMINA_INLINE uint ddgiProbeIndex(uint3 c, uint4 counts) {
+LUMINA_INLINE uint ddgiProbeIndex(uint3 c, uint3 counts) {
     return c.x + counts.x * (c.y + counts.y * c.z);
 }
 
 // The lattice point a slot holds, and the slot of a lattice point (scrolled cascades).
 LUMINA_INLINE uint3 ddgiLatticeOfSlot(DdgiVolumeInfo v, uint3 slot) {
-    const uint3 n = uint3(v.counts.x, v.counts.y, v.counts.z);
-    return (slot + n - uint3(v.scroll.x, v.scroll.y, v.scroll.z)) % n;
+    return (slot + v.counts - v.scroll) % v.counts;
 }
 
 LUMINA_INLINE uint3 ddgiSlotOfLattice(DdgiVolumeInfo v, uint3 lattice) {
-    const uint3 n = uint3(v.counts.x, v.counts.y, v.counts.z);
-    return (lattice + uint3(v.scroll.x, v.scroll.y, v.scroll.z)) % n;
+    return (lattice + v.scroll) % v.counts;
 }
 
 LUMINA_INLINE float3 ddgiLatticePosition(DdgiVolumeInfo v, uint3 c) {
-    return float3(v.originAndUnit.x + v.spacing.x * float(c.x), v.originAndUnit.y + v.spacing.y * float(c.y),
-                  v.originAndUnit.z + v.spacing.z * float(c.z));
+    return float3(v.origin.x + v.spacing.x * float(c.x), v.origin.y + v.spacing.y * float(c.y),
+                  v.origin.z + v.spacing.z * float(c.z));
 }
 
 // The top-left texel of probe p's tile in an atlas of `tile`-texel tiles.
 LUMINA_INLINE uint2 ddgiTileOrigin(DdgiVolumeInfo v, uint p, uint tile) {
-    return uint2((p % v.atlas.x) * tile, (v.atlas.y + p / v.atlas.x) * tile);
+    return uint2((p % v.tilesPerRow) * tile, (v.firstTileRow + p / v.tilesPerRow) * tile);
 }
 
 LUMINA_INLINE float ddgiEncodeIrradiance(float e) {

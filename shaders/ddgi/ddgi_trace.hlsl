@@ -47,8 +47,8 @@ float3 hitRadiance(float3 p, float3 n, float3 seenFrom, bool nearField) {
 }
 
 float4 traceRay(float3 origin, float3 direction) {
-    const float nearDistance = gDdgi.trace.x;
-    const float maxDistance = gDdgi.trace.y;
+    const float nearDistance = gDdgi.nearFieldDistance;
+    const float maxDistance = gDdgi.maxTraceDistance;
     SdfHit hit = sdfTraceNearField(origin, direction, 0.0, sdfDefaultTraceParams(nearDistance));
     bool nearField = true;
     if (sdfIsMiss(hit) && nearDistance < maxDistance) {
@@ -72,18 +72,18 @@ groupshared float4 gsProbe; // xyz: ray origin; w: rays to trace
 
 [numthreads(LUMINA_DDGI_TRACE_GROUP, 1, 1)] void main(uint3 group : SV_GroupID, uint t : SV_GroupIndex) {
     const uint probe = group.x;
-    if (probe >= gDdgi.rays.w) {
+    if (probe >= gDdgi.probeCount) {
         return;
     }
     if (t == 0u) {
         const DdgiProbe p = gProbes[probe];
-        const uint rays = ddgiProbeInactive(p) ? gDdgi.rays.y : gDdgi.rays.x;
+        const uint rays = ddgiProbeInactive(p) ? gDdgi.fixedRays : gDdgi.raysPerProbe;
         gsProbe = float4(ddgiProbePosition(ddgiProbeRef(probe), p), float(rays));
     }
     GroupMemoryBarrierWithGroupSync();
     const float3 origin = gsProbe.xyz;
     const uint rays = uint(gsProbe.w);
     for (uint r = t; r < rays; r += LUMINA_DDGI_TRACE_GROUP) {
-        gRayData[probe * gDdgi.rays.x + r] = traceRay(origin, ddgiRayDirection(r));
+        gRayData[probe * gDdgi.raysPerProbe + r] = traceRay(origin, ddgiRayDirection(r));
     }
 }

@@ -15,7 +15,7 @@ LUMINA_GPU_NAMESPACE_BEGIN
 #define LUMINA_MAX_SHADOWED_LIGHTS 4
 #define LUMINA_CUBE_FACE_COUNT 6
 
-// DeferredLight::shadow.x of a light that casts no shadow (beyond the shadow-casting budget).
+// DeferredLight::shadowSlot of a light that casts no shadow (beyond the shadow-casting budget).
 #define LUMINA_SHADOW_SLOT_NONE 0xFFFFFFFFu
 
 // CompositeConstants::flags.
@@ -37,30 +37,52 @@ LUMINA_GPU_NAMESPACE_BEGIN
 // Frame-wide constants (register b0 of every deferred kernel).
 struct DeferredFrameConstants {
     GpuCamera camera;
-    uint4 counts; // x: lights; y: width; z: height; w: unused
+    uint lightCount;
+    uint width; // of the image, in pixels
+    uint height;
+    uint pad0;
 };
 LUMINA_STATIC_ASSERT_SIZE(DeferredFrameConstants, 160);
+LUMINA_STATIC_ASSERT_OFFSET(DeferredFrameConstants, lightCount, 144);
+
+// A shadow-casting point or spot light (DeferredShadowConstants::pointLights).
+struct ShadowedPointLight {
+    float3 position; // world
+    float range;     // shadow range: the cube maps store distance / range
+};
+LUMINA_STATIC_ASSERT_SIZE(ShadowedPointLight, 16);
 
 // The one constant buffer of both shadow kinds (register b1): the sun's orthographic
 // projection and the shadow-casting point and spot lights.
 struct DeferredShadowConstants {
     // World to the sun's clip space: x right, y up, depth 0 nearest the sun, 1 farthest.
     float4 sunViewProjRows[4];
-    float4 sunMap; // x: size in texels; y: 1 / size; z: world size of one texel; w: depth range (world)
-    // x: face size in texels; y: 1 / face size; z: near plane fraction; w: shadowed light count
-    float4 pointMap;
-    // Per cube: xyz: light position; w: shadow range (stored value = distance / range).
-    float4 pointLights[LUMINA_MAX_SHADOWED_LIGHTS];
+    float sunMapSize;        // texels per side; 0: no sun map
+    float sunMapInvSize;     // 1 / sunMapSize
+    float sunTexelWorld;     // world size of one texel
+    float sunDepthRange;     // world distance depth 0..1 spans
+    float pointFaceSize;     // cube face texels per side
+    float pointFaceInvSize;  // 1 / pointFaceSize
+    float pointNearFraction; // near plane of the faces, a fraction of the shadow range
+    uint shadowedPointCount; // cubes in use
+    ShadowedPointLight pointLights[LUMINA_MAX_SHADOWED_LIGHTS]; // one per cube
 };
 LUMINA_STATIC_ASSERT_SIZE(DeferredShadowConstants, 160);
+LUMINA_STATIC_ASSERT_OFFSET(DeferredShadowConstants, sunMapSize, 64);
+LUMINA_STATIC_ASSERT_OFFSET(DeferredShadowConstants, pointFaceSize, 80);
+LUMINA_STATIC_ASSERT_OFFSET(DeferredShadowConstants, pointLights, 96);
 
 // One light of the direct-light pass: the shared light model (lights_shared.h) and its shadow.
 struct DeferredLight {
     GpuLight light;
-    uint4 shadow; // x: 0 = the sun map for a directional light, the cube index for point and spot
-                  // lights, LUMINA_SHADOW_SLOT_NONE: unshadowed; yzw: unused
+    uint shadowSlot; // 0 = the sun map for a directional light, the cube index for point and spot
+                     // lights, LUMINA_SHADOW_SLOT_NONE: unshadowed
+    uint pad0;
+    uint pad1;
+    uint pad2;
 };
 LUMINA_STATIC_ASSERT_SIZE(DeferredLight, 80);
+LUMINA_STATIC_ASSERT_OFFSET(DeferredLight, shadowSlot, 64);
 
 // ---- GBuffer: visibility raster, then attribute resolve ----------------------------------
 // The raster writes one R32_UINT per pixel (docs/deferred.md, "GBuffer"): 0 where no surface,

@@ -28,7 +28,7 @@ LUMINA_UAV_FORMAT(rgba16f) RWTexture2D<float4> gDirect : register(u0);
 
 [numthreads(LUMINA_DEFERRED_GROUP_SIZE, LUMINA_DEFERRED_GROUP_SIZE, 1)]
 void main(uint3 id : SV_DispatchThreadID) {
-    if (id.x >= gFrame.counts.y || id.y >= gFrame.counts.z) {
+    if (id.x >= gFrame.width || id.y >= gFrame.height) {
         return;
     }
     const int3 pixel = int3(id.xy, 0);
@@ -41,7 +41,7 @@ void main(uint3 id : SV_DispatchThreadID) {
     const float3 position = gPosition.Load(pixel).xyz;
     const float3 albedo = gAlbedo.Load(pixel).rgb;
     float3 irradiance = float3(0.0, 0.0, 0.0);
-    for (uint i = 0; i < gFrame.counts.x; ++i) {
+    for (uint i = 0; i < gFrame.lightCount; ++i) {
         const DeferredLight light = gLights[i];
         const LightSample sample = evaluateLight(light.light, position);
         const float cosine = dot(normal.xyz, sample.direction);

@@ -140,7 +140,7 @@ void main(uint3 id : SV_DispatchThreadID) {
         const float3 emission = material.emission.rgb * sampleLayer(material.textures.y, uv, uvDx, uvDy);
         materialOut = float4(emittedRadiance(emission, material.textures.z, seenFromFront ? 1.0 : -1.0),
                              float(draw.material));
-        position = float4(world, dot(world - eye, gFrame.camera.forwardAndAspect.xyz));
+        position = float4(world, dot(world - eye, gFrame.camera.forward));
     }
     gAlbedo[id.xy] = albedo;
     gNormal[id.xy] = normalOut;

@@ -24,14 +24,14 @@ Varyings vsMain(uint vertexId : SV_VertexID) {
     const float3 world = instancePointToWorld(instance, gVertices[vertexId].positionU.xyz);
     const uint cube = gDraw.layer / LUMINA_CUBE_FACE_COUNT;
     const uint face = gDraw.layer % LUMINA_CUBE_FACE_COUNT;
-    const float4 light = gShadow.pointLights[cube];
+    const ShadowedPointLight light = gShadow.pointLights[cube];
     Varyings output;
-    output.offset = world - light.xyz;
-    output.position = cubeFaceClip(output.offset, face, light.w * gShadow.pointMap.z, light.w);
+    output.offset = world - light.position;
+    output.position = cubeFaceClip(output.offset, face, light.range * gShadow.pointNearFraction, light.range);
     return output;
 }
 
 float psMain(Varyings input) : SV_Target0 {
-    const float range = gShadow.pointLights[gDraw.layer / LUMINA_CUBE_FACE_COUNT].w;
+    const float range = gShadow.pointLights[gDraw.layer / LUMINA_CUBE_FACE_COUNT].range;
     return length(input.offset) / range;
 }

@@ -47,7 +47,7 @@ float pcf3x3(int layer, float2 uv, float size, float receiver) {
 }
 
 float sunVisibility(float3 position, float3 normal) {
-    const float texelWorld = LUMINA_SHADOW_CONSTANTS.sunMap.z;
+    const float texelWorld = LUMINA_SHADOW_CONSTANTS.sunTexelWorld;
     const float4 p = float4(position + normal * (LUMINA_SUN_NORMAL_OFFSET_TEXELS * texelWorld), 1.0);
     const float3 clip = float3(dot(LUMINA_SHADOW_CONSTANTS.sunViewProjRows[0], p), dot(LUMINA_SHADOW_CONSTANTS.sunViewProjRows[1], p),
                                dot(LUMINA_SHADOW_CONSTANTS.sunViewProjRows[2], p));
@@ -55,33 +55,33 @@ float sunVisibility(float3 position, float3 normal) {
     if (any(uv < 0.0) || any(uv > 1.0) || clip.z > 1.0) {
         return 1.0; // outside the fitted map: nothing there casts a shadow
     }
-    const float receiver = clip.z - LUMINA_SUN_DEPTH_BIAS_TEXELS * texelWorld / LUMINA_SHADOW_CONSTANTS.sunMap.w;
-    return pcf3x3(-1, uv, LUMINA_SHADOW_CONSTANTS.sunMap.x, receiver);
+    const float receiver = clip.z - LUMINA_SUN_DEPTH_BIAS_TEXELS * texelWorld / LUMINA_SHADOW_CONSTANTS.sunDepthRange;
+    return pcf3x3(-1, uv, LUMINA_SHADOW_CONSTANTS.sunMapSize, receiver);
 }
 
 float pointVisibility(uint cube, float3 position, float3 normal) {
-    const float4 light = LUMINA_SHADOW_CONSTANTS.pointLights[cube];
+    const ShadowedPointLight light = LUMINA_SHADOW_CONSTANTS.pointLights[cube];
     // World size of one face texel at the receiver: a face spans 2 x its major-axis distance.
-    const float texelWorld = 2.0 * length(position - light.xyz) * LUMINA_SHADOW_CONSTANTS.pointMap.y;
-    const float3 offset = position + normal * (LUMINA_POINT_NORMAL_OFFSET_TEXELS * texelWorld) - light.xyz;
-    const float receiver = (length(offset) - LUMINA_POINT_DEPTH_BIAS_TEXELS * texelWorld) / light.w;
+    const float texelWorld = 2.0 * length(position - light.position) * LUMINA_SHADOW_CONSTANTS.pointFaceInvSize;
+    const float3 offset = position + normal * (LUMINA_POINT_NORMAL_OFFSET_TEXELS * texelWorld) - light.position;
+    const float receiver = (length(offset) - LUMINA_POINT_DEPTH_BIAS_TEXELS * texelWorld) / light.range;
     if (receiver >= 1.0) {
         return 1.0; // beyond the shadow range (unlimited lights reach the whole scene)
     }
     const uint face = cubeFaceOf(offset);
     const int layer = int(cube * LUMINA_CUBE_FACE_COUNT + face);
-    return pcf3x3(layer, cubeFaceUv(offset, face), LUMINA_SHADOW_CONSTANTS.pointMap.x, receiver);
+    return pcf3x3(layer, cubeFaceUv(offset, face), LUMINA_SHADOW_CONSTANTS.pointFaceSize, receiver);
 }
 
 float shadowVisibility(DeferredLight light, float3 position, float3 normal) {
-    const uint slot = light.shadow.x;
+    const uint slot = light.shadowSlot;
     if (slot == LUMINA_SHADOW_SLOT_NONE) {
         return 1.0;
     }
     if (lightType(light.light) == LUMINA_LIGHT_DIRECTIONAL) {
-        return LUMINA_SHADOW_CONSTANTS.sunMap.x > 0.0 ? sunVisibility(position, normal) : 1.0;
+        return LUMINA_SHADOW_CONSTANTS.sunMapSize > 0.0 ? sunVisibility(position, normal) : 1.0;
     }
-    return slot < uint(LUMINA_SHADOW_CONSTANTS.pointMap.w) ? pointVisibility(slot, position, normal) : 1.0;
+    return slot < LUMINA_SHADOW_CONSTANTS.shadowedPointCount ? pointVisibility(slot, position, normal) : 1.0;
 }
 
 #endif

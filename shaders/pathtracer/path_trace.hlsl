@@ -90,7 +90,7 @@ void ptAddLight(inout PathState path, uint bounces, float3 radiance) {
 // events of the paths this adds, counting this vertex).
 void ptSamplePunctualLights(inout PathState path, uint bounces, float3 origin, float3 p, float3 ns, float3 ng,
                             float3 albedo) {
-    for (uint i = 0u; i < gConstants.counts.x; ++i) {
+    for (uint i = 0u; i < gConstants.lightCount; ++i) {
         LightSample ls = evaluateLight(gLights[i], p);
         float cosSurface = dot(ns, ls.direction);
         if (cosSurface <= 0.0f || dot(ng, ls.direction) <= 0.0f || all(ls.irradiance <= 0.0f)) {
@@ -108,7 +108,7 @@ void ptSamplePunctualLights(inout PathState path, uint bounces, float3 origin, f
 // sampling by the power heuristic.
 void ptSampleEmitter(inout PathState path, inout PtRng rng, uint bounces, float3 origin, float3 ns, float3 ng,
                      float3 albedo) {
-    uint count = gConstants.counts.y;
+    uint count = gConstants.emitterCount;
     float uPick = ptRngNext(rng);
     float uKeep = ptRngNext(rng);
     float2 bary = ptSampleTriangle(ptRngNext(rng), ptRngNext(rng));
@@ -156,14 +156,14 @@ void ptSampleEmitter(inout PathState path, inout PtRng rng, uint bounces, float3
 [numthreads(LUMINA_SCREEN_GROUP_SIZE, LUMINA_SCREEN_GROUP_SIZE, 1)] void main(uint3 id
                                                         : SV_DispatchThreadID) {
     uint2 pixel = uint2(gPass.tileX + id.x, gPass.tileY + id.y);
-    uint width = gConstants.image.x;
-    if (pixel.x >= width || pixel.y >= gConstants.image.y) {
+    uint width = gConstants.width;
+    if (pixel.x >= width || pixel.y >= gConstants.height) {
         return;
     }
     uint pixelIndex = pixel.y * width + pixel.x;
-    uint flags = gConstants.counts.w;
-    uint maxBounces = gConstants.counts.z;
-    PtRng rng = ptRngCreate(gConstants.image.z, pixelIndex, gPass.sampleIndex);
+    uint flags = gConstants.flags;
+    uint maxBounces = gConstants.maxBounces;
+    PtRng rng = ptRngCreate(gConstants.seed, pixelIndex, gPass.sampleIndex);
 
     float2 jitter = float2(0.5f, 0.5f);
     if ((flags & LUMINA_PT_FLAG_JITTER) != 0u) {
@@ -218,7 +218,7 @@ void ptSampleEmitter(inout PathState path, inout PtRng rng, uint bounces, float3
         float3 p = s.position;
         origin = ptOffsetRayOrigin(p, ng);
         ptSamplePunctualLights(path, bounces + 1u, origin, p, ns, ng, albedo);
-        if (gConstants.counts.y > 0u) {
+        if (gConstants.emitterCount > 0u) {
             ptSampleEmitter(path, rng, bounces + 1u, origin, ns, ng, albedo);
         }
 
@@ -238,7 +238,7 @@ void ptSampleEmitter(inout PathState path, inout PtRng rng, uint bounces, float3
         if (maxThroughput <= 0.0f) {
             break;
         }
-        if (bounces + 1u >= gConstants.image.w && maxThroughput < 1.0f) {
+        if (bounces + 1u >= gConstants.rouletteStartBounce && maxThroughput < 1.0f) {
             if (uRoulette >= maxThroughput) {
                 break;
             }

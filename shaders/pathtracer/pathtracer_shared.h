@@ -53,8 +53,14 @@ struct PtPixelAovs {
 // Constants of one render (constant buffer b0).
 struct PathTraceConstants {
     GpuCamera camera;
-    uint4 counts; // x: light count; y: emitter count; z: max bounces; w: flags (LUMINA_PT_FLAG_*)
-    uint4 image;  // x: width; y: height; z: seed; w: Russian roulette starts after this many bounces
+    uint lightCount;
+    uint emitterCount; // emissive triangles
+    uint maxBounces;
+    uint flags; // LUMINA_PT_FLAG_*
+    uint width; // of the image, in pixels
+    uint height;
+    uint seed;
+    uint rouletteStartBounce; // Russian roulette starts after this many bounces
 };
 
 // Push constants of one sample pass over one tile.
@@ -78,6 +84,8 @@ LUMINA_STATIC_ASSERT_SIZE(PtEmitter, 64);
 LUMINA_STATIC_ASSERT_SIZE(PtAliasEntry, 16);
 LUMINA_STATIC_ASSERT_SIZE(PtPixelAovs, 64);
 LUMINA_STATIC_ASSERT_SIZE(PathTraceConstants, 176);
+LUMINA_STATIC_ASSERT_OFFSET(PathTraceConstants, lightCount, 144);
+LUMINA_STATIC_ASSERT_OFFSET(PathTraceConstants, width, 160);
 LUMINA_STATIC_ASSERT_SIZE(PathTracePassConstants, 16);
 LUMINA_STATIC_ASSERT_SIZE(PtRayQueryConstants, 16);
 

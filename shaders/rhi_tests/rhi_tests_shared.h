@@ -29,10 +29,14 @@ struct WritePatternPush {
 LUMINA_STATIC_ASSERT_SIZE(WritePatternPush, 16);
 
 struct WritePatternConstants {
-    uint4 multiplier; // structured output = input * multiplier + (seed, i, 7, 1)
-    float4 scale;     // x: structured .b.z = i * scale.x; y: texel .w
+    uint4 multiplier;   // structured output = input * multiplier + (seed, i, 7, 1)
+    float elementScale; // structured .b.z = i * elementScale
+    float texelW;       // the storage texture's .w
+    float pad0;
+    float pad1;
 };
 LUMINA_STATIC_ASSERT_SIZE(WritePatternConstants, 32);
+LUMINA_STATIC_ASSERT_OFFSET(WritePatternConstants, elementScale, 16);
 
 struct PatternElement {
     uint4 a;

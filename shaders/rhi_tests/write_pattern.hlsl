@@ -19,13 +19,13 @@ static const uint kRawMultiplier = 7;
     const uint i = id.x;
     if (i < gPush.count) {
         PatternElement element;
-        element.a = gInput[i].a * gConstants.multiplier.xyzw + uint4(gPush.seed, i, 7, 1);
-        element.b = float4(float(i), float(gPush.seed), float(i) * gConstants.scale.x, gInput[i].b.w);
+        element.a = gInput[i].a * gConstants.multiplier + uint4(gPush.seed, i, 7, 1);
+        element.b = float4(float(i), float(gPush.seed), float(i) * gConstants.elementScale, gInput[i].b.w);
         gStructured[i] = element;
         gRaw.Store(i * kRawStride, i * kRawMultiplier + gPush.seed);
     }
     if (i < gPush.width * gPush.height) {
         const uint2 texel = uint2(i % gPush.width, i / gPush.width);
-        gImage[texel] = float4(float(texel.x), float(texel.y), float(gPush.seed), gConstants.scale.y);
+        gImage[texel] = float4(float(texel.x), float(texel.y), float(gPush.seed), gConstants.texelW);
     }
 }

@@ -13,7 +13,7 @@ groupshared float gsMass[LUMINA_SP_PROBE_TEXELS];
 
 [numthreads(LUMINA_SP_PROBE_TEXELS, 1, 1)] void main(uint3 group : SV_GroupID, uint t : SV_GroupIndex) {
     const uint probe = probeIndexOfGroup(group);
-    if (probe >= gSp.grid.w || !probeIsValid(gProbes[probe])) {
+    if (probe >= gSp.probeCount || !probeIsValid(gProbes[probe])) {
         return; // uniform across the group: the barrier below is reached by all or none
     }
     gsMass[t] = hemiOctTexelCosineMass(t % LUMINA_SP_OCT_SIZE, t / LUMINA_SP_OCT_SIZE, LUMINA_SP_OCT_SIZE);

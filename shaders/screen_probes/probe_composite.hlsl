@@ -19,10 +19,10 @@ groupshared uint gsTexels[LUMINA_SP_MAX_RAYS];
 
 [numthreads(LUMINA_SP_PROBE_TEXELS, 1, 1)] void main(uint3 group : SV_GroupID, uint t : SV_GroupIndex) {
     const uint probe = probeIndexOfGroup(group);
-    if (probe >= gSp.grid.w || !probeIsValid(gProbes[probe])) {
+    if (probe >= gSp.probeCount || !probeIsValid(gProbes[probe])) {
         return;
     }
-    const uint rayCount = gSp.rays.x;
+    const uint rayCount = gSp.raysPerProbe;
     for (uint r = t; r < rayCount; r += LUMINA_SP_PROBE_TEXELS) {
         const ProbeRay ray = gRays[probe * rayCount + r];
         const float3 radiance = gRayRadiance[probe * rayCount + r].rgb;

@@ -2,7 +2,7 @@
 // Pass 3, lighting PDF: where light came from last frame. The probe is reprojected into the
 // previous frame and, where the old probe there saw the same surface, each texel's direction is
 // looked up in the old probe's radiance history: texel probability ~ luminance x solid angle. A
-// floor (temporal.w) of the distribution is spread uniformly over the hemisphere so that every
+// floor (lightingPdfFloor) of the distribution is spread uniformly over the hemisphere so that every
 // direction stays reachable; without history the table is uniform in solid angle.
 // One group per probe, one thread per texel.
 #include "screen_probes/screen_probe_common.hlsli"
@@ -18,7 +18,7 @@ groupshared float gsSolidAngle[LUMINA_SP_PROBE_TEXELS];
 
 [numthreads(LUMINA_SP_PROBE_TEXELS, 1, 1)] void main(uint3 group : SV_GroupID, uint t : SV_GroupIndex) {
     const uint probe = probeIndexOfGroup(group);
-    if (probe >= gSp.grid.w || !probeIsValid(gProbes[probe])) {
+    if (probe >= gSp.probeCount || !probeIsValid(gProbes[probe])) {
         return;
     }
     const ScreenProbe current = gProbes[probe];
@@ -39,7 +39,7 @@ groupshared float gsSolidAngle[LUMINA_SP_PROBE_TEXELS];
         totalSolidAngle += gsSolidAngle[i];
     }
     const float even = solidAngle / totalSolidAngle;
-    const float floorShare = gSp.temporal.w;
+    const float floorShare = gSp.lightingPdfFloor;
     const float p = totalMass > 0.0 ? (1.0 - floorShare) * mass / totalMass + floorShare * even : even;
     gLightingPdf[probe * LUMINA_SP_PROBE_TEXELS + t] = p;
 }

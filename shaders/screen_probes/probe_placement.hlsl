@@ -9,11 +9,11 @@ Texture2D<float4> gPosition : register(t1); // xyz: world position; w: view dept
 RWStructuredBuffer<ScreenProbe> gProbes : register(u0);
 
 [numthreads(LUMINA_SP_SCREEN_GROUP, LUMINA_SP_SCREEN_GROUP, 1)] void main(uint3 id : SV_DispatchThreadID) {
-    if (id.x >= gSp.grid.x || id.y >= gSp.grid.y) {
+    if (id.x >= gSp.probeGrid.x || id.y >= gSp.probeGrid.y) {
         return;
     }
-    const uint spacing = gSp.grid.z;
-    const uint2 pixel = min(id.xy * spacing + spacing / 2u, gSp.screen.xy - 1u);
+    const uint spacing = gSp.probeSpacing;
+    const uint2 pixel = min(id.xy * spacing + spacing / 2u, gSp.imageSize - 1u);
     const float4 normal = gNormal.Load(int3(pixel, 0));
     const float4 position = gPosition.Load(int3(pixel, 0));
     const float normalLength = length(normal.xyz);
@@ -23,5 +23,5 @@ RWStructuredBuffer<ScreenProbe> gProbes : register(u0);
     probe.positionAndDepth = surface ? position : float4(0.0, 0.0, 0.0, 0.0);
     probe.normal = surface ? float4(normal.xyz / normalLength, 0.0) : float4(0.0, 0.0, 1.0, 0.0);
     probe.info = uint4(surface ? LUMINA_SP_PROBE_VALID : 0u, pixel, 0u);
-    gProbes[id.y * gSp.grid.x + id.x] = probe;
+    gProbes[id.y * gSp.probeGrid.x + id.x] = probe;
 }

@@ -1,5 +1,5 @@
 // lumina-kernel: cs main
-// Pass 4, MIS directions: rays.y rays from the BRDF table and rays.z from the lighting table,
+// Pass 4, MIS directions: brdfRays rays from the BRDF table and lightingRays from the lighting table,
 // each a low-discrepancy point (Hammersley, rotated per frame and per probe) warped through its
 // table, carrying the balance-heuristic weight 1 / (nBrdf p_b + nLight p_l)
 // (probe_sampling_shared.h). One group per probe; thread t makes rays t, t + 64, ...
@@ -8,7 +8,7 @@
 StructuredBuffer<ScreenProbe> gProbes : register(t0);
 StructuredBuffer<float> gBrdfPdf : register(t1);
 StructuredBuffer<float> gLightingPdf : register(t2);
-RWStructuredBuffer<ProbeRay> gRays : register(u0); // rays.x per probe
+RWStructuredBuffer<ProbeRay> gRays : register(u0); // raysPerProbe per probe
 
 groupshared float gsBrdf[LUMINA_SP_PROBE_TEXELS];
 groupshared float gsLight[LUMINA_SP_PROBE_TEXELS];
@@ -34,7 +34,7 @@ uint findTexel(bool brdf, float u) {
 
 [numthreads(LUMINA_SP_PROBE_TEXELS, 1, 1)] void main(uint3 group : SV_GroupID, uint t : SV_GroupIndex) {
     const uint probe = probeIndexOfGroup(group);
-    if (probe >= gSp.grid.w || !probeIsValid(gProbes[probe])) {
+    if (probe >= gSp.probeCount || !probeIsValid(gProbes[probe])) {
         return;
     }
     gsBrdf[t] = gBrdfPdf[probe * LUMINA_SP_PROBE_TEXELS + t];
@@ -50,16 +50,16 @@ uint findTexel(bool brdf, float u) {
     }
     GroupMemoryBarrierWithGroupSync();
     const ProbeFrame frame = probeFrame(gProbes[probe].normal.xyz);
-    const uint rayCount = gSp.rays.x;
-    const uint brdfRays = gSp.rays.y;
+    const uint rayCount = gSp.raysPerProbe;
+    const uint brdfRays = gSp.brdfRays;
     const float nBrdf = float(brdfRays);
-    const float nLight = float(gSp.rays.z);
+    const float nLight = float(gSp.lightingRays);
     for (uint r = t; r < rayCount; r += LUMINA_SP_PROBE_TEXELS) {
         const bool fromBrdf = r < brdfRays;
         const uint strategy = fromBrdf ? LUMINA_SP_STRATEGY_BRDF : LUMINA_SP_STRATEGY_LIGHTING;
         const uint local = fromBrdf ? r : r - brdfRays;
-        const uint count = fromBrdf ? brdfRays : gSp.rays.z;
-        const float2 u = spSamplePoint(local, count, gSp.screen.z, probe, strategy);
+        const uint count = fromBrdf ? brdfRays : gSp.lightingRays;
+        const float2 u = spSamplePoint(local, count, gSp.frameIndex, probe, strategy);
         const uint k = findTexel(fromBrdf, u.x);
         const float before = fromBrdf ? gsBrdfCdf[k] : gsLightCdf[k];
         const SpTableSample s = spTableSampleAt(k, before, fromBrdf ? gsBrdf[k] : gsLight[k], u);

@@ -45,11 +45,11 @@ RWStructuredBuffer<float4> gRayRadiance : register(u0); // rgb: radiance; a: 1 h
 // One return per function, and none inside a loop: with an early return in the lean loop,
 // vkd3d-shader's DXBC made every far hit black on D3D12 under Wine (docs/d3d12.md).
 float3 coneHitVoxelRadiance(SdfHit hit, float3 direction) {
-    const float voxel = gSp.voxelGrid.minAndVoxelSize.w;
+    const float voxel = gSp.voxelGrid.voxelSize;
     const float3 p = hit.positionAndT.xyz;
     const float3 n = sdfFacingNormal(hit.normalAndCoverage.xyz, direction, hit.positionAndT.w);
     const float3 seenFrom = sdfSeenFrom(direction, hit.positionAndT.w);
-    const float radius = hit.positionAndT.w * gSp.trace.y;
+    const float radius = hit.positionAndT.w * gSp.coneTanHalfAngle;
     const float reach = LUMINA_SP_CONE_LEAN_RADII * radius + LUMINA_SP_CONE_LEAN_VOXELS * voxel;
     float3 radiance = float3(0.0, 0.0, 0.0);
     bool found = false;
@@ -67,7 +67,7 @@ float3 voxelRadiance(SdfHit hit, float3 direction) {
     float3 radiance = float3(0.0, 0.0, 0.0);
     if (hasFlag(LUMINA_SP_FLAG_VOXEL_LIGHTING)) {
         const float3 position = hit.positionAndT.xyz;
-        const float3 uvw = (position - gSp.voxelMin.xyz) / (gSp.voxelMax.xyz - gSp.voxelMin.xyz);
+        const float3 uvw = (position - gSp.voxelMin) / (gSp.voxelMax - gSp.voxelMin);
         if (hasFlag(LUMINA_SP_FLAG_VOXEL_GRID)) {
             radiance = coneHitVoxelRadiance(hit, direction);
         } else if (all(uvw >= 0.0) && all(uvw <= 1.0)) {
@@ -80,10 +80,10 @@ float3 voxelRadiance(SdfHit hit, float3 direction) {
 
 [numthreads(LUMINA_SP_PROBE_TEXELS, 1, 1)] void main(uint3 group : SV_GroupID, uint t : SV_GroupIndex) {
     const uint probe = probeIndexOfGroup(group);
-    if (probe >= gSp.grid.w || !probeIsValid(gProbes[probe])) {
+    if (probe >= gSp.probeCount || !probeIsValid(gProbes[probe])) {
         return;
     }
-    const uint rayCount = gSp.rays.x;
+    const uint rayCount = gSp.raysPerProbe;
     for (uint r = t; r < rayCount; r += LUMINA_SP_PROBE_TEXELS) {
         const uint ray = probe * rayCount + r;
         if (hasFlag(LUMINA_SP_FLAG_NEAR_FIELD)) {

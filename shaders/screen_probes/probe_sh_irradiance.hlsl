@@ -27,7 +27,7 @@ groupshared float3 gsSh[LUMINA_SH_COEFFICIENTS];
 
 [numthreads(LUMINA_SP_PROBE_TEXELS, 1, 1)] void main(uint3 group : SV_GroupID, uint t : SV_GroupIndex) {
     const uint probe = probeIndexOfGroup(group);
-    if (probe >= gSp.grid.w || !probeIsValid(gProbes[probe])) {
+    if (probe >= gSp.probeCount || !probeIsValid(gProbes[probe])) {
         return;
     }
     const ProbeFrame frame = probeFrame(gProbes[probe].normal.xyz);
@@ -67,7 +67,7 @@ groupshared float3 gsSh[LUMINA_SH_COEFFICIENTS];
         g.v[k] = gsSh[k].y;
         b.v[k] = gsSh[k].z;
     }
-    const uint2 tile = uint2(probe % gSp.grid.x, probe / gSp.grid.x) * LUMINA_SP_IRRADIANCE_TILE;
+    const uint2 tile = uint2(probe % gSp.probeGrid.x, probe / gSp.probeGrid.x) * LUMINA_SP_IRRADIANCE_TILE;
     const uint tileTexels = LUMINA_SP_IRRADIANCE_TILE * LUMINA_SP_IRRADIANCE_TILE;
     for (uint i = t; i < tileTexels; i += LUMINA_SP_PROBE_TEXELS) {
         const uint2 at = uint2(i % LUMINA_SP_IRRADIANCE_TILE, i / LUMINA_SP_IRRADIANCE_TILE);

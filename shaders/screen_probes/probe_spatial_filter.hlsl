@@ -1,8 +1,8 @@
 // lumina-kernel: cs main
 // Pass 9, spatial filter: each texel of a probe's accumulated radiance averaged with the same
 // world direction in its four grid neighbours (a cross-bilateral filter over the probe grid). The
-// centre weighs 1; a neighbour exp(-plane distance / (filter.x x view depth)) x
-// max(0, n . n')^filter.y, so light does not bleed across depth or orientation edges. Texels with
+// centre weighs 1; a neighbour exp(-plane distance / (filterPlaneScale x view depth)) x
+// max(0, n . n')^filterNormalPower, so light does not bleed across depth or orientation edges. Texels with
 // no data (weight 0) take no part. One group per probe, one thread per texel.
 #include "screen_probes/screen_probe_common.hlsli"
 
@@ -12,7 +12,7 @@ RWStructuredBuffer<float4> gFiltered : register(u0); // rgb: radiance; a: 1 wher
 
 [numthreads(LUMINA_SP_PROBE_TEXELS, 1, 1)] void main(uint3 group : SV_GroupID, uint t : SV_GroupIndex) {
     const uint probe = probeIndexOfGroup(group);
-    if (probe >= gSp.grid.w || !probeIsValid(gProbes[probe])) {
+    if (probe >= gSp.probeCount || !probeIsValid(gProbes[probe])) {
         return;
     }
     const ScreenProbe centre = gProbes[probe];
@@ -24,18 +24,18 @@ RWStructuredBuffer<float4> gFiltered : register(u0); // rgb: radiance; a: 1 wher
     const int2 cell = int2(group.xy);
     for (uint k = 0u; k < 4u; ++k) {
         const int2 at = cell + offsets[k];
-        if (any(at < 0) || any(at >= int2(gSp.grid.xy))) {
+        if (any(at < 0) || any(at >= int2(gSp.probeGrid))) {
             continue;
         }
-        const uint other = uint(at.y) * gSp.grid.x + uint(at.x);
+        const uint other = uint(at.y) * gSp.probeGrid.x + uint(at.x);
         const ScreenProbe neighbour = gProbes[other];
         if (!probeIsValid(neighbour)) {
             continue;
         }
         const float3 offset = neighbour.positionAndDepth.xyz - centre.positionAndDepth.xyz;
         const float planeDistance = abs(dot(offset, centre.normal.xyz));
-        const float w = exp(-planeDistance / (gSp.filter.x * centre.positionAndDepth.w)) *
-                        pow(saturate(dot(neighbour.normal.xyz, centre.normal.xyz)), gSp.filter.y);
+        const float w = exp(-planeDistance / (gSp.filterPlaneScale * centre.positionAndDepth.w)) *
+                        pow(saturate(dot(neighbour.normal.xyz, centre.normal.xyz)), gSp.filterNormalPower);
         const int texel = texelInFrame(probeFrame(neighbour.normal.xyz), direction);
         if (texel < 0 || !(w > 0.0)) {
             continue;

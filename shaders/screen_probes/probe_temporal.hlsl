@@ -2,9 +2,9 @@
 // Pass 8, temporal accumulation of probe radiance. The history texel is found like the lighting
 // PDF's (reprojected probe, same surface, same world direction); a probe that moved loses it.
 // Numerator and denominator of each texel's weighted mean are blended exponentially,
-//     W' = (1 - a) W + a w,   L' = ((1 - a) W L + a w x) / W'   (a = temporal.x, about 10% new),
+//     W' = (1 - a) W + a w,   L' = ((1 - a) W L + a w x) / W'   (a = probeHistoryBlend, about 10% new),
 // so early frames average like a running mean and texels no ray reached keep their radiance. A new
-// value brighter than temporal.y x max(its history, the probe's mean history) is scaled down to that
+// value brighter than outlierClamp x max(its history, the probe's mean history) is scaled down to that
 // (a single bright ray must not linger for ten frames). The factor trades bias for steadiness: a
 // light smaller than a texel reads several times its texel's mean every frame a ray hits it, so
 // 2 took a quarter of the Cornell box floor's light; clamping against the probe's brightest texel
@@ -26,7 +26,7 @@ groupshared float gsSolidAngle[LUMINA_SP_PROBE_TEXELS];
 
 [numthreads(LUMINA_SP_PROBE_TEXELS, 1, 1)] void main(uint3 group : SV_GroupID, uint t : SV_GroupIndex) {
     const uint probe = probeIndexOfGroup(group);
-    if (probe >= gSp.grid.w || !probeIsValid(gProbes[probe])) {
+    if (probe >= gSp.probeCount || !probeIsValid(gProbes[probe])) {
         return;
     }
     const ScreenProbe current = gProbes[probe];
@@ -50,12 +50,12 @@ groupshared float gsSolidAngle[LUMINA_SP_PROBE_TEXELS];
     }
     // Outlier clamp: relative to the probe's own light level; a probe with no (or black) history
     // has nothing to call an outlier against.
-    const float limit = gSp.temporal.y * max(history.a > 0.0 ? luminance(history.rgb) : 0.0, meanLuminance);
+    const float limit = gSp.outlierClamp * max(history.a > 0.0 ? luminance(history.rgb) : 0.0, meanLuminance);
     const float l = luminance(x.rgb);
     if (limit > 0.0 && l > limit) {
         x.rgb *= limit / l;
     }
-    const float a = gSp.temporal.x;
+    const float a = gSp.probeHistoryBlend;
     // Where the scene changed, the old light is (partly) wrong: it keeps less weight.
     const float oldWeight = (1.0 - a) * history.a * historyKeep(current.positionAndDepth.xyz);
     const float newWeight = a * x.a;

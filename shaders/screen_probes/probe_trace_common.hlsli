@@ -15,7 +15,7 @@ StructuredBuffer<ProbeRay> gRays : register(t7);
 // bias (the global SDF is coarse: starting on the surface would hit it at once), then out of any
 // other surface's shell.
 float3 probeRayOrigin(ScreenProbe p) {
-    float3 origin = p.positionAndDepth.xyz + p.normal.xyz * gSp.trace.z;
+    float3 origin = p.positionAndDepth.xyz + p.normal.xyz * gSp.originBias;
     // A probe in a corner (a wall meeting the floor) lifted along its own normal can stay within
     // the other surface's SDF shell, where every ray hits at t = 0 and reads whichever card the
     // gradient there names: in the open-top box, the sunlit outside of the wall, a bright "+" in
@@ -29,8 +29,8 @@ float3 probeRayOrigin(ScreenProbe p) {
     // 0.1; docs/gi.md, energy). The camera sees the probe, so it lies on the probe's side of every
     // wall beside it: a push away from the camera would cross one, and the origin moves towards
     // the camera instead, into the free space between them.
-    const float clearance = 0.5 * gSp.trace.z;
-    const float3 towardCamera = normalize(gSp.camera.positionAndTanHalfFovY.xyz - p.positionAndDepth.xyz);
+    const float clearance = 0.5 * gSp.originBias;
+    const float3 towardCamera = normalize(gSp.camera.position - p.positionAndDepth.xyz);
     for (uint step = 0u; step < LUMINA_SP_ORIGIN_PUSH_STEPS; ++step) {
         const float distance = sdfSampleGlobal(origin);
         if (distance >= clearance) {
@@ -51,7 +51,7 @@ groupshared float3 gsRayOrigin;
 bool tracedProbe(uint3 group, uint thread, out uint probe, out float3 origin) {
     probe = probeIndexOfGroup(group);
     origin = float3(0.0, 0.0, 0.0);
-    if (probe >= gSp.grid.w || !probeIsValid(gProbes[probe])) {
+    if (probe >= gSp.probeCount || !probeIsValid(gProbes[probe])) {
         return false;
     }
     if (thread == 0u) {

@@ -17,16 +17,16 @@ RWStructuredBuffer<SdfHit> gHits : register(u0);
     if (!tracedProbe(group, t, probe, origin)) {
         return;
     }
-    const SdfTraceParams params = sdfDefaultTraceParams(gSp.trace.x);
+    const SdfTraceParams params = sdfDefaultTraceParams(gSp.maxTraceDistance);
     const bool nearField = hasFlag(LUMINA_SP_FLAG_NEAR_FIELD);
-    const float tMin = nearField ? gSp.trace.w : 0.0;
-    const uint rayCount = gSp.rays.x;
+    const float tMin = nearField ? gSp.nearFieldDistance : 0.0;
+    const uint rayCount = gSp.raysPerProbe;
     for (uint r = t; r < rayCount; r += LUMINA_SP_PROBE_TEXELS) {
         const uint ray = probe * rayCount + r;
         if (nearField && gNearField[ray].a != float(LUMINA_SP_NEAR_MISS)) {
             continue;
         }
         const float3 direction = gRays[ray].directionAndWeight.xyz;
-        gHits[ray] = sdfConeTraceGlobal(origin, direction, tMin, gSp.trace.y, params);
+        gHits[ray] = sdfConeTraceGlobal(origin, direction, tMin, gSp.coneTanHalfAngle, params);
     }
 }

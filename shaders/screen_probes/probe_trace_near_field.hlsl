@@ -1,7 +1,7 @@
 // lumina-kernel: cs main
 // Pass 5, near-field trace: every ray of every valid probe sphere-traced through the mesh SDFs
 // (sdfTraceNearField: the instance BVH, closest hit) from the far field's origin, up to the
-// near-field distance (trace.w). A hit finds the card that owns it through the card BVH
+// near-field distance (nearFieldDistance). A hit finds the card that owns it through the card BVH
 // (findCardOwner, the rule of card_bvh_shared.h) and reads the surface cache's final layer there:
 // the outgoing radiance of the surface, i.e. the radiance arriving back along the ray. Where no
 // card owns the hit, or none of the card's texels around it were captured, the voxel lighting at
@@ -45,7 +45,7 @@ float4 nearFieldRadiance(SdfHit hit, float3 direction) {
 // Traces ray `ray` of a probe from `origin`: the hit record and the near-field result.
 void traceNearField(uint ray, float3 origin) {
     const float3 direction = gRays[ray].directionAndWeight.xyz;
-    const SdfHit hit = sdfTraceNearField(origin, direction, 0.0, sdfDefaultTraceParams(gSp.trace.w));
+    const SdfHit hit = sdfTraceNearField(origin, direction, 0.0, sdfDefaultTraceParams(gSp.nearFieldDistance));
     gHits[ray] = hit;
     gNearField[ray] = sdfIsMiss(hit) ? float4(0.0, 0.0, 0.0, float(LUMINA_SP_NEAR_MISS))
                                      : nearFieldRadiance(hit, direction);
@@ -59,7 +59,7 @@ void traceNearField(uint ray, float3 origin) {
     if (!tracedProbe(group, t, probe, origin)) {
         return;
     }
-    for (uint r = t; r < gSp.rays.x; r += LUMINA_SP_PROBE_TEXELS) {
-        traceNearField(probe * gSp.rays.x + r, origin);
+    for (uint r = t; r < gSp.raysPerProbe; r += LUMINA_SP_PROBE_TEXELS) {
+        traceNearField(probe * gSp.raysPerProbe + r, origin);
     }
 }

@@ -11,7 +11,7 @@ ConstantBuffer<ScreenProbeConstants> gSp : register(b1);
 
 // Per-probe passes dispatch one group per probe over the probe grid.
 uint probeIndexOfGroup(uint3 group) {
-    return group.y * gSp.grid.x + group.x;
+    return group.y * gSp.probeGrid.x + group.x;
 }
 
 bool probeIsValid(ScreenProbe probe) {
@@ -19,7 +19,7 @@ bool probeIsValid(ScreenProbe probe) {
 }
 
 bool hasFlag(uint flag) {
-    return (gSp.screen.w & flag) != 0u;
+    return (gSp.flags & flag) != 0u;
 }
 
 bool allFinite3(float3 v) {
@@ -37,8 +37,8 @@ bool previousPixel(float3 world, out float2 pixel) {
         return false;
     }
     const float2 ndc = clip.xy / clip.w;
-    pixel = float2(0.5 + 0.5 * ndc.x, 0.5 - 0.5 * ndc.y) * float2(gSp.screen.xy);
-    return all(pixel >= 0.0) && all(pixel < float2(gSp.screen.xy));
+    pixel = float2(0.5 + 0.5 * ndc.x, 0.5 - 0.5 * ndc.y) * float2(gSp.imageSize);
+    return all(pixel >= 0.0) && all(pixel < float2(gSp.imageSize));
 }
 
 // The previous frame's probe at the cell this probe's position projects to there, or -1. Probes sit
@@ -48,12 +48,12 @@ int historyProbeCandidate(float3 world) {
     if (!hasFlag(LUMINA_SP_FLAG_PROBE_HISTORY) || !previousPixel(world, pixel)) {
         return -1;
     }
-    const uint2 cell = min(uint2(pixel) / gSp.grid.z, gSp.grid.xy - 1u);
-    return int(cell.y * gSp.grid.x + cell.x);
+    const uint2 cell = min(uint2(pixel) / gSp.probeSpacing, gSp.probeGrid - 1u);
+    return int(cell.y * gSp.probeGrid.x + cell.x);
 }
 
 // Whether the old probe saw the same surface: valid, on the new probe's plane (within
-// filter.z x view depth), facing the same way (cosine at least filter.w) and within
+// historyPlaneTolerance x view depth), facing the same way (cosine at least historyNormalTolerance) and within
 // LUMINA_SP_HISTORY_MAX_CELLS cells' world size of it. A probe that moved in world space
 // (disocclusion, a moved object) loses its history.
 // The share of its weight that history at `world` keeps: the least of the change regions holding
@@ -61,8 +61,9 @@ int historyProbeCandidate(float3 world) {
 float historyKeep(float3 world) {
     float keep = 1.0;
     for (uint i = 0u; i < gSp.changeRegionCount; ++i) {
-        if (all(world >= gSp.changeRegionMin[i].xyz) && all(world <= gSp.changeRegionMax[i].xyz)) {
-            keep = min(keep, gSp.changeRegionMin[i].w);
+        const ChangeRegion region = gSp.changeRegions[i];
+        if (all(world >= region.boxMin) && all(world <= region.boxMax)) {
+            keep = min(keep, region.historyKept);
         }
     }
     return keep;
@@ -74,10 +75,10 @@ bool historyMatches(ScreenProbe current, ScreenProbe previous) {
     }
     const float depth = current.positionAndDepth.w;
     const float3 offset = previous.positionAndDepth.xyz - current.positionAndDepth.xyz;
-    const float cellWorld = float(gSp.grid.z) * 2.0 * gSp.camera.positionAndTanHalfFovY.w * depth *
-                            gSp.camera.imageSize.w;
-    return abs(dot(offset, current.normal.xyz)) <= gSp.filter.z * depth &&
-           dot(previous.normal.xyz, current.normal.xyz) >= gSp.filter.w &&
+    const float cellWorld = float(gSp.probeSpacing) * 2.0 * gSp.camera.tanHalfFovY * depth *
+                            gSp.camera.invImageSize.y;
+    return abs(dot(offset, current.normal.xyz)) <= gSp.historyPlaneTolerance * depth &&
+           dot(previous.normal.xyz, current.normal.xyz) >= gSp.historyNormalTolerance &&
            length(offset) <= LUMINA_SP_HISTORY_MAX_CELLS * cellWorld;
 }
 

@@ -33,18 +33,19 @@ LUMINA_GPU_NAMESPACE_BEGIN
 #define LUMINA_SP_MAX_CHANGE_REGIONS 8u
 
 #define LUMINA_SP_PROBE_VALID 1u
-// ScreenProbeConstants::screen.w
+// ScreenProbeConstants::flags
 #define LUMINA_SP_FLAG_PROBE_HISTORY 1u  // the previous frame's probes and radiance may be reused
 #define LUMINA_SP_FLAG_SCREEN_HISTORY 2u // the previous frame's gathered irradiance may be reused
 #define LUMINA_SP_FLAG_VOXEL_LIGHTING 4u // far-field hits read the voxel lighting volume
-// The near field traced every ray this frame: the far field traces only its misses, from trace.w on.
+// The near field traced every ray this frame: the far field traces only its misses, from nearFieldDistance
+// on.
 #define LUMINA_SP_FLAG_NEAR_FIELD 8u
 // The voxel lighting is the surface cache's (voxelGrid: rgb mean radiance, a coverage), read leaning
 // along -normal (sampleVoxelLighting).
 #define LUMINA_SP_FLAG_VOXEL_GRID 16u
 
 // What the near field found along a ray: the a lane of the per-ray near-field result.
-#define LUMINA_SP_NEAR_MISS 0u  // nothing within trace.w: the far field traces on
+#define LUMINA_SP_NEAR_MISS 0u  // nothing within nearFieldDistance: the far field traces on
 #define LUMINA_SP_NEAR_CARD 1u  // a hit, radiance from its card's final-lighting texels
 #define LUMINA_SP_NEAR_VOXEL 2u // a hit no card covers, radiance from the voxel lighting
 
@@ -71,35 +72,74 @@ struct ProbeRay {
     uint4 info; // x: texel of the probe's radiance map; y: LUMINA_SP_STRATEGY_*; z: 1 if traced; w: 0
 };
 
+// A world box where the scene changed (ScreenProbeConstants::changeRegions).
+struct ChangeRegion {
+    float3 boxMin;
+    float historyKept; // weight history inside the box keeps (0..1)
+    float3 boxMax;
+    float boxMaxPadding;
+};
+
 // Constants of every screen-probe kernel (register b1: b0 is the SDF scene's in the trace pass).
 struct ScreenProbeConstants {
     GpuCamera camera;         // this frame
     GpuCamera previousCamera; // the frame the history was made in
-    uint4 grid;               // x, y: probes across and down; z: spacing in pixels; w: probe count
-    uint4 screen;             // x, y: image size; z: frame index (ray jitter); w: LUMINA_SP_FLAG_*
-    uint4 rays;               // x: rays per probe; y: BRDF rays; z: lighting rays; w: 0
-    float4 voxelMin;          // xyz: world corner of the voxel lighting volume
-    float4 voxelMax;          // xyz: far corner
-    float4 trace;             // x: max distance (world); y: tan of the cone half angle; z: origin bias
-                              // (world, along the probe normal); w: near-field distance (world; 0 when
-                              // the near field does not run)
-    float4 temporal;          // x: probe history blend (weight of the new frame); y: outlier clamp (x the
-                              // probe's history luminance); z: screen blend; w: lighting PDF floor
-    float4 filter;            // x: plane-distance scale (x view depth); y: normal power; z: history plane
-                              // tolerance (x view depth); w: cos of the history normal tolerance
-    VoxelGridInfo voxelGrid;  // the surface cache's voxel lighting (near-field fallback; far hits with
-                              // LUMINA_SP_FLAG_VOXEL_GRID); zero without a surface cache
-    uint changeRegionCount;   // regions in use, at most LUMINA_SP_MAX_CHANGE_REGIONS
+    // The probe grid.
+    uint2 probeGrid;   // probes across and down
+    uint probeSpacing; // pixels between probe centres (a cell's edge)
+    uint probeCount;   // probeGrid.x * probeGrid.y
+    // The image and the frame.
+    uint2 imageSize; // pixels
+    uint frameIndex; // jitters the ray directions from frame to frame
+    uint flags;      // LUMINA_SP_FLAG_*
+    // Rays per probe.
+    uint raysPerProbe;
+    uint brdfRays;     // drawn from the BRDF PDF
+    uint lightingRays; // drawn from the lighting PDF (raysPerProbe - brdfRays)
+    uint raysPadding;
+    // The voxel lighting volume that far-field hits read.
+    float3 voxelMin; // world corner
+    float voxelMinPadding;
+    float3 voxelMax; // far corner
+    float voxelMaxPadding;
+    // Tracing (world distances).
+    float maxTraceDistance;
+    float coneTanHalfAngle;  // tan of the cone half angle
+    float originBias;        // along the probe normal
+    float nearFieldDistance; // the far field starts here; 0 when the near field does not run
+    // Temporal reuse.
+    float probeHistoryBlend;  // weight of the new frame in the probe history
+    float outlierClamp;       // x the probe's history luminance
+    float screenHistoryBlend; // weight of the new frame in the gathered irradiance's history
+    float lightingPdfFloor;   // share of the lighting PDF spread uniformly
+    // Filters and history acceptance.
+    float filterPlaneScale;       // plane-distance scale (x view depth)
+    float filterNormalPower;      // exponent of the normal weight
+    float historyPlaneTolerance;  // x view depth
+    float historyNormalTolerance; // cos of the largest normal change history survives
+    VoxelGridInfo voxelGrid;      // the surface cache's voxel lighting (near-field fallback; far hits with
+                                  // LUMINA_SP_FLAG_VOXEL_GRID); zero without a surface cache
+    uint changeRegionCount;       // regions in use, at most LUMINA_SP_MAX_CHANGE_REGIONS
     uint changePadding0;
     uint changePadding1;
     uint changePadding2;
-    float4 changeRegionMin[LUMINA_SP_MAX_CHANGE_REGIONS]; // xyz: world corner; w: history weight kept (0..1)
-    float4 changeRegionMax[LUMINA_SP_MAX_CHANGE_REGIONS]; // xyz: far corner; w: 0
+    ChangeRegion changeRegions[LUMINA_SP_MAX_CHANGE_REGIONS];
 };
 
+LUMINA_STATIC_ASSERT_SIZE(ChangeRegion, 32);
 LUMINA_STATIC_ASSERT_SIZE(ScreenProbe, 48);
 LUMINA_STATIC_ASSERT_SIZE(ProbeRay, 32);
 LUMINA_STATIC_ASSERT_SIZE(ScreenProbeConstants, 720);
+LUMINA_STATIC_ASSERT_OFFSET(ScreenProbeConstants, probeGrid, 288);
+LUMINA_STATIC_ASSERT_OFFSET(ScreenProbeConstants, imageSize, 304);
+LUMINA_STATIC_ASSERT_OFFSET(ScreenProbeConstants, raysPerProbe, 320);
+LUMINA_STATIC_ASSERT_OFFSET(ScreenProbeConstants, voxelMin, 336);
+LUMINA_STATIC_ASSERT_OFFSET(ScreenProbeConstants, voxelMax, 352);
+LUMINA_STATIC_ASSERT_OFFSET(ScreenProbeConstants, maxTraceDistance, 368);
+LUMINA_STATIC_ASSERT_OFFSET(ScreenProbeConstants, probeHistoryBlend, 384);
+LUMINA_STATIC_ASSERT_OFFSET(ScreenProbeConstants, filterPlaneScale, 400);
+LUMINA_STATIC_ASSERT_OFFSET(ScreenProbeConstants, voxelGrid, 416);
+LUMINA_STATIC_ASSERT_OFFSET(ScreenProbeConstants, changeRegions, 464);
 
 LUMINA_GPU_NAMESPACE_END
 

@@ -38,14 +38,14 @@ static const uint kBrickCoordMask = (1u << kBrickCoordBits) - 1u;
     uint3 brickCoord = uint3(brick.x & kBrickCoordMask, (brick.x >> kBrickCoordBits) & kBrickCoordMask,
                              brick.x >> (2u * kBrickCoordBits));
     uint3 voxel = brickCoord * LUMINA_SDF_BRICK_SIZE + threadId;
-    if (any(voxel >= cascade.dims.xyz)) {
+    if (any(voxel >= cascade.dims)) {
         return;
     }
-    float voxelSize = cascade.minAndVoxelSize.w;
-    float maxDistance = cascade.maxAndMaxDistance.w;
+    float voxelSize = cascade.voxelSize;
+    float maxDistance = cascade.maxDistance;
     // The centre from the lattice index, not from the window, so that a voxel recomposed after
     // the window moved equals a fresh compose (for a single cascade: the grid's corner + voxel).
-    float3 p = cascade.latticeOriginAndShell.xyz + (float3(int3(voxel) + asint(cascade.window.xyz)) + 0.5f) * voxelSize;
+    float3 p = cascade.latticeOrigin + (float3(int3(voxel) + asint(cascade.window)) + 0.5f) * voxelSize;
     float best = maxDistance;
     float bestInstance = LUMINA_SDF_GLOBAL_NO_INSTANCE;
     for (uint i = brick.y; i < brick.y + brick.z; ++i) {
@@ -55,13 +55,13 @@ static const uint kBrickCoordMask = (1u << kBrickCoordBits) - 1u;
         // The table's shell is sized for the finest cascade; coarser ones grow it.
         float shell = instance.worldMax.w;
         if (shell > 0.0f) {
-            shell += cascade.latticeOriginAndShell.w;
+            shell += cascade.openShellExtra;
         }
         // Everything of the instance lies in its world box: it cannot be nearer.
         if (sdfBoxDistance(p, instance.worldMinAndScale.xyz, instance.worldMax.xyz) - shell >= best) {
             continue;
         }
-        float d = sdfSampleVolume(volume, gSdfScene.invAtlasDims.xyz, sdfWorldToObject(instance, p)) *
+        float d = sdfSampleVolume(volume, gSdfScene.invAtlasDims, sdfWorldToObject(instance, p)) *
                       instance.worldMinAndScale.w -
                   shell;
         if (d < best) {
@@ -70,7 +70,7 @@ static const uint kBrickCoordMask = (1u << kBrickCoordBits) - 1u;
         }
     }
     // Toroidal storage: lattice voxel i at texel i mod dims of the cascade's slab.
-    uint3 texel = (voxel + cascade.wrapAndSlab.xyz) % cascade.dims.xyz;
-    texel.z += cascade.wrapAndSlab.w;
+    uint3 texel = (voxel + cascade.wrap) % cascade.dims;
+    texel.z += cascade.slabFirstZ;
     gGlobalSdf[texel] = float2(max(best, -maxDistance), bestInstance);
 }

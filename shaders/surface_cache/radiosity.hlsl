@@ -55,7 +55,7 @@ static const uint2 kProbeTexelOrder[16] = {
     uint2(0, 1), uint2(3, 1), uint2(0, 2), uint2(3, 2), uint2(0, 3), uint2(1, 3), uint2(2, 3), uint2(3, 3)};
 
 uint probesPerRow() {
-    return gConstants.atlas.x / LUMINA_RADIOSITY_PROBE_SPACING;
+    return gConstants.atlasSize / LUMINA_RADIOSITY_PROBE_SPACING;
 }
 
 // The probe (in the atlas's probe grid) of a per-probe tile-list dispatch's thread; false past
@@ -63,11 +63,11 @@ uint probesPerRow() {
 bool listedProbe(uint2 id, out uint2 probe) {
     probe = uint2(0, 0);
     uint entry, inTile;
-    if (!tileListItem(id, gConstants.atlas.y, LUMINA_PROBES_PER_TILE, entry, inTile)) {
+    if (!tileListItem(id, gConstants.tileCount, LUMINA_PROBES_PER_TILE, entry, inTile)) {
         return false;
     }
     uint tile = gTiles[entry];
-    probe = uint2(tile % gConstants.atlas.z, tile / gConstants.atlas.z) * LUMINA_PROBES_PER_TILE_SIDE +
+    probe = uint2(tile % gConstants.tilesPerRow, tile / gConstants.tilesPerRow) * LUMINA_PROBES_PER_TILE_SIDE +
             uint2(inTile % LUMINA_PROBES_PER_TILE_SIDE, inTile / LUMINA_PROBES_PER_TILE_SIDE);
     return true;
 }
@@ -112,7 +112,7 @@ float3 finiteOrZero(float3 v) {
         }
         float3 candidateNormal = normalize(normal.xyz);
         float3 candidateWorld = atlasTexelWorldPosition(gCards[candidateCard], candidate);
-        float distance = sdfSampleGlobal(candidateWorld + gConstants.trace.x * candidateNormal);
+        float distance = sdfSampleGlobal(candidateWorld + gConstants.originOffset * candidateNormal);
         if (card == LUMINA_NO_CARD || distance > bestDistance) {
             texel = candidate;
             card = candidateCard;
@@ -121,12 +121,12 @@ float3 finiteOrZero(float3 v) {
             bestDistance = distance;
         }
     }
-    if (card == LUMINA_NO_CARD || atlasTexelBuried(world, n, gConstants.trace.x)) {
+    if (card == LUMINA_NO_CARD || atlasTexelBuried(world, n, gConstants.originOffset)) {
         gProbesOut[probeIndex(probe)] = emptyProbe(); // its texels get no indirect light
         return;
     }
     // The offset is in finest global SDF voxels; where a coarser cascade serves the texel, its own.
-    float3 origin = world + gConstants.trace.x * sdfGlobalCascadeScaleAt(world) * n;
+    float3 origin = world + gConstants.originOffset * sdfGlobalCascadeScaleAt(world) * n;
     // An orthonormal frame around n (Duff et al. 2017, branchless).
     float s = n.z >= 0.0f ? 1.0f : -1.0f;
     float a = -1.0f / (s + n.z);
@@ -134,9 +134,9 @@ float3 finiteOrZero(float3 v) {
     float3 t1 = float3(1.0f + s * n.x * n.x * a, s * b, -s * n.x);
     float3 t2 = float3(b, s + n.y * n.y * a, -n.y);
 
-    SdfTraceParams params = sdfDefaultTraceParams(gConstants.trace.y);
+    SdfTraceParams params = sdfDefaultTraceParams(gConstants.maxDistance);
     params.maxSteps = LUMINA_RADIOSITY_MAX_STEPS;
-    float rotation = frac(float(gConstants.atlas.w) * LUMINA_GOLDEN_FRACTION);
+    float rotation = frac(float(gConstants.updateIndex) * LUMINA_GOLDEN_FRACTION);
     float4 shR = float4(0.0f, 0.0f, 0.0f, 0.0f);
     float4 shG = shR;
     float4 shB = shR;
@@ -176,7 +176,7 @@ float3 finiteOrZero(float3 v) {
     // Refinement (radiosity_schedule.h): the mean of this trace and the history, weighted
     // 1 / (k + 1) for the k-th pass, so that rotated ray sets average out; a convex combination,
     // so it never adds energy.
-    float blend = gConstants.trace.w;
+    float blend = gConstants.temporalBlend;
     RadiosityProbe history = gProbesOut[probeIndex(probe)];
     if (blend < 1.0f && history.normalAndValid.w != 0.0f) {
         result.r = lerp(history.r, result.r, blend);
@@ -210,7 +210,7 @@ float3 finiteOrZero(float3 v) {
         RadiosityProbe neighbour = gProbesIn[probeIndex(uint2(q))];
         // Same card and about the same plane: never blend light across an edge or a crease.
         bool similar = neighbour.normalAndValid.w != 0.0f &&
-                       dot(neighbour.normalAndValid.xyz, centre.normalAndValid.xyz) > gConstants.trace.z &&
+                       dot(neighbour.normalAndValid.xyz, centre.normalAndValid.xyz) > gConstants.filterMinCosine &&
                        atlasTexelCard(uint2(q) * LUMINA_RADIOSITY_PROBE_SPACING) == card;
         if (similar) {
             sum.r += neighbour.r;
@@ -236,11 +236,11 @@ float shIrradiance(float4 sh, float3 n) {
 [numthreads(LUMINA_LINEAR_GROUP_SIZE, 1, 1)] void integrate(uint3 id
                                       : SV_DispatchThreadID) {
     uint entry, item;
-    if (!tileListItem(id.xy, gConstants.atlas.y, LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE, entry,
+    if (!tileListItem(id.xy, gConstants.tileCount, LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE, entry,
                       item)) {
         return;
     }
-    uint2 texel = tileListTexel(gTiles[entry], gConstants.atlas.z, item);
+    uint2 texel = tileListTexel(gTiles[entry], gConstants.tilesPerRow, item);
     float4 normal = gSurface.Load(int4(texel, 0, 0));
     RadiosityProbe probe = gProbesIn[probeIndex(texel / LUMINA_RADIOSITY_PROBE_SPACING)];
     float3 irradiance = float3(0.0f, 0.0f, 0.0f);
@@ -250,5 +250,5 @@ float shIrradiance(float4 sh, float3 n) {
             float3(shIrradiance(probe.r, n), shIrradiance(probe.g, n), shIrradiance(probe.b, n)));
     }
     gIndirect[texel] =
-        roundToHalfDithered(float4(irradiance, 1.0f), ditherOf(uint3(texel, 1u), gConstants.atlas.w));
+        roundToHalfDithered(float4(irradiance, 1.0f), ditherOf(uint3(texel, 1u), gConstants.updateIndex));
 }

@@ -26,12 +26,12 @@ float3 finiteOrZero(float3 v) {
 [numthreads(LUMINA_LINEAR_GROUP_SIZE, 1, 1)] void main(uint3 id
                                  : SV_DispatchThreadID) {
     uint entry, item;
-    if (!tileListItem(id.xy, gConstants.atlas.y, LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE, entry,
+    if (!tileListItem(id.xy, gConstants.tileCount, LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE, entry,
                       item)) {
         return;
     }
     uint tile = gTiles[entry];
-    uint2 tileOrigin = uint2(tile % gConstants.atlas.z, tile / gConstants.atlas.z) * LUMINA_ATLAS_TILE_SIZE;
+    uint2 tileOrigin = uint2(tile % gConstants.tilesPerRow, tile / gConstants.tilesPerRow) * LUMINA_ATLAS_TILE_SIZE;
     uint2 texel = tileOrigin + uint2(item % LUMINA_ATLAS_TILE_SIZE, item / LUMINA_ATLAS_TILE_SIZE);
     float4 normal = gSurface.Load(int4(texel, 0, 0));
     if (normal.a == 0.0f) {
@@ -44,5 +44,5 @@ float3 finiteOrZero(float3 v) {
         finiteOrZero(gDirect.Load(int3(texel, 0)).rgb) + finiteOrZero(gIndirect.Load(int3(texel, 0)).rgb);
     float3 radiance = max(irradiance, 0.0f) * albedo * LUMINA_INV_PI + max(emission, 0.0f);
     gFinal[texel] = roundToHalfDithered(float4(min(radiance, LUMINA_HALF_MAX), 1.0f),
-                                        ditherOf(uint3(texel, 0u), gConstants.atlas.w));
+                                        ditherOf(uint3(texel, 0u), gConstants.updateIndex));
 }

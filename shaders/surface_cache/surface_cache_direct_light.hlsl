@@ -40,10 +40,10 @@ bool cardSeesLight(SurfaceCard card, uint light) {
 [numthreads(LUMINA_LINEAR_GROUP_SIZE, 1, 1)]
 void main(uint3 id : SV_DispatchThreadID) {
     uint entry, item;
-    if (!tileListItem(id.xy, gConstants.atlas.y, LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE, entry, item)) {
+    if (!tileListItem(id.xy, gConstants.tileCount, LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE, entry, item)) {
         return;
     }
-    uint2 texel = tileListTexel(gTiles[entry], gConstants.atlas.z, item);
+    uint2 texel = tileListTexel(gTiles[entry], gConstants.tilesPerRow, item);
     float4 normal = gSurface.Load(int4(texel, 0, 0));
     uint cardIndex = atlasTexelCard(texel);
     if (normal.a == 0.0f || cardIndex == LUMINA_NO_CARD) {
@@ -54,7 +54,7 @@ void main(uint3 id : SV_DispatchThreadID) {
     float3 n = normalize(normal.xyz);
     float3 position = atlasTexelWorldPosition(card, texel);
     float3 irradiance = float3(0.0f, 0.0f, 0.0f);
-    for (uint i = 0u; i < gConstants.atlas.w; ++i) {
+    for (uint i = 0u; i < gConstants.lightCount; ++i) {
         if (!cardSeesLight(card, i)) {
             continue;
         }

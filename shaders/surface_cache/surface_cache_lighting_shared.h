@@ -89,13 +89,18 @@ LUMINA_GPU_NAMESPACE_BEGIN
 
 // A list of atlas tiles to process (row-major tile indices in a StructuredBuffer<uint>).
 struct AtlasTileListConstants {
-    uint4 atlas; // x: atlas size in texels; y: tiles in the list; z: tiles per atlas row; w: update
-                 // index (combine: the dither of its half rounding)
+    uint atlasSize;   // texels per side
+    uint tileCount;   // tiles in the list
+    uint tilesPerRow; // tiles per atlas row
+    uint updateIndex; // combine: the dither of its half rounding
 };
 LUMINA_STATIC_ASSERT_SIZE(AtlasTileListConstants, 16);
 
 struct SurfaceDirectLightConstants {
-    uint4 atlas; // x: atlas size in texels; y: tiles in the list; z: tiles per atlas row; w: lights
+    uint atlasSize;   // texels per side
+    uint tileCount;   // tiles in the list
+    uint tilesPerRow; // tiles per atlas row
+    uint lightCount;
 };
 LUMINA_STATIC_ASSERT_SIZE(SurfaceDirectLightConstants, 16);
 
@@ -108,28 +113,44 @@ LUMINA_STATIC_ASSERT_SIZE(SurfaceDirectLightConstants, 16);
 
 // The voxel-lighting grid over the scene bounds.
 struct VoxelGridInfo {
-    float4 minAndVoxelSize; // xyz: world corner of voxel (0,0,0); w: voxel side
-    uint4 dims;             // xyz: voxels per axis; w: 0
+    float3 boxMin;   // world corner of voxel (0,0,0)
+    float voxelSize; // world side of a voxel
+    uint3 dims;      // voxels per axis
+    uint dimsPadding;
 };
 LUMINA_STATIC_ASSERT_SIZE(VoxelGridInfo, 32);
+LUMINA_STATIC_ASSERT_OFFSET(VoxelGridInfo, voxelSize, 12);
+LUMINA_STATIC_ASSERT_OFFSET(VoxelGridInfo, dims, 16);
 
 struct VoxelInjectConstants {
     VoxelGridInfo grid;
-    uint4 atlas; // x: atlas size in texels; y: tiles in the list; z: tiles per atlas row; w: update
-                 // index (the dither of resolve's half rounding)
-    float4
-        buriedProbeDistance; // x: a texel is buried when the global SDF is negative this far in front (world)
+    uint atlasSize;            // texels per side
+    uint tileCount;            // tiles in the list
+    uint tilesPerRow;          // tiles per atlas row
+    uint updateIndex;          // the dither of resolve's half rounding
+    float buriedProbeDistance; // a texel is buried when the global SDF is negative this far in front (world)
+    float buriedPadding0;
+    float buriedPadding1;
+    float buriedPadding2;
 };
 LUMINA_STATIC_ASSERT_SIZE(VoxelInjectConstants, 64);
+LUMINA_STATIC_ASSERT_OFFSET(VoxelInjectConstants, atlasSize, 32);
+LUMINA_STATIC_ASSERT_OFFSET(VoxelInjectConstants, buriedProbeDistance, 48);
 
 struct RadiosityConstants {
     VoxelGridInfo grid;
-    uint4
-        atlas; // x: atlas size; y: tiles in the list; z: tiles per atlas row; w: update index (ray rotation)
-    float4 trace; // x: ray origin offset along the normal (world); y: max distance; z: filter normal
-                  // threshold; w: 0
+    uint atlasSize;        // texels per side
+    uint tileCount;        // tiles in the list
+    uint tilesPerRow;      // tiles per atlas row
+    uint updateIndex;      // rotates the rays from update to update
+    float originOffset;    // ray origin offset along the normal (world, x the cascade scale where it is)
+    float maxDistance;     // of a ray (world)
+    float filterMinCosine; // the spatial filter skips neighbours whose normals differ more
+    float temporalBlend;   // weight of this update's radiance in the probe history
 };
 LUMINA_STATIC_ASSERT_SIZE(RadiosityConstants, 64);
+LUMINA_STATIC_ASSERT_OFFSET(RadiosityConstants, atlasSize, 32);
+LUMINA_STATIC_ASSERT_OFFSET(RadiosityConstants, originOffset, 48);
 
 // A radiosity probe: L1 spherical harmonics of its incoming radiance, one float4 per colour
 // channel, (L00, L1 along x, y, z) of the real SH basis, and its surface normal. A probe on no

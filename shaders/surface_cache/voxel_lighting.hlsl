@@ -37,23 +37,23 @@ LUMINA_UAV_FORMAT(rgba16f) RWTexture3D<float4> gVoxels : register(u1);
 [numthreads(LUMINA_LINEAR_GROUP_SIZE, 1, 1)] void inject(uint3 id
                                    : SV_DispatchThreadID) {
     uint entry, item;
-    if (!tileListItem(id.xy, gConstants.atlas.y, LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE, entry,
+    if (!tileListItem(id.xy, gConstants.tileCount, LUMINA_ATLAS_TILE_SIZE * LUMINA_ATLAS_TILE_SIZE, entry,
                       item)) {
         return;
     }
-    uint2 texel = tileListTexel(gTiles[entry], gConstants.atlas.z, item);
+    uint2 texel = tileListTexel(gTiles[entry], gConstants.tilesPerRow, item);
     uint card = atlasTexelCard(texel);
     float4 normal = gSurface.Load(int4(texel, 0, 0));
     if (card == LUMINA_NO_CARD || normal.a == 0.0f) {
         return;
     }
     float3 world = atlasTexelWorldPosition(gCards[card], texel);
-    if (atlasTexelBuried(world, normalize(normal.xyz), gConstants.buriedProbeDistance.x)) {
+    if (atlasTexelBuried(world, normalize(normal.xyz), gConstants.buriedProbeDistance)) {
         return;
     }
-    float3 local = (world - gConstants.grid.minAndVoxelSize.xyz) / gConstants.grid.minAndVoxelSize.w;
+    float3 local = (world - gConstants.grid.boxMin) / gConstants.grid.voxelSize;
     int3 voxel = int3(floor(local));
-    int3 dims = int3(gConstants.grid.dims.xyz);
+    int3 dims = int3(gConstants.grid.dims);
     if (any(voxel < 0) || any(voxel >= dims) || any(isnan(world))) {
         return;
     }
@@ -92,7 +92,7 @@ void resolve(uint3 id : SV_DispatchThreadID) {
         float3 sum = float3(gAccumulator[base + 0u], gAccumulator[base + 1u], gAccumulator[base + 2u]);
         value = float4(sum / float(weight), 1.0f);
     }
-    gVoxels[id] = roundToHalfDithered(value, ditherOf(id, gConstants.atlas.w ^ 0x9e3779b9u));
+    gVoxels[id] = roundToHalfDithered(value, ditherOf(id, gConstants.updateIndex ^ 0x9e3779b9u));
     for (uint c = 0u; c < 4u; ++c) {
         gAccumulator[base + c] = 0u;
     }

@@ -26,11 +26,11 @@
 // Coverage-weighted trilinear lookup at p in the faces n points along that `ray` can see: rgb,
 // and the summed weight in a.
 float4 voxelLightingTrilinear(VoxelGridInfo grid, float3 p, float3 n, float3 ray) {
-    float voxel = grid.minAndVoxelSize.w;
-    float3 local = (p - grid.minAndVoxelSize.xyz) / voxel - 0.5f;
+    float voxel = grid.voxelSize;
+    float3 local = (p - grid.boxMin) / voxel - 0.5f;
     int3 base = int3(floor(local));
     float3 f = local - float3(base);
-    int3 last = int3(grid.dims.xyz) - 1;
+    int3 last = int3(grid.dims) - 1;
     float3 sum = float3(0.0f, 0.0f, 0.0f);
     float weight = 0.0f;
     for (uint axis = 0u; axis < 3u; ++axis) {
@@ -61,7 +61,7 @@ float4 voxelLightingTrilinear(VoxelGridInfo grid, float3 p, float3 n, float3 ray
 }
 
 float3 sampleVoxelLighting(VoxelGridInfo grid, float3 p, float3 n, float3 ray) {
-    float voxel = grid.minAndVoxelSize.w;
+    float voxel = grid.voxelSize;
     float4 near = voxelLightingTrilinear(grid, p - 0.5f * voxel * n, n, ray);
     if (near.a > 0.0f) {
         return near.rgb;

@@ -19,12 +19,12 @@ struct Varyings {
 };
 
 Varyings vsMain(uint vertexId : SV_VertexID) {
-    const uint offset = (gUi.vertexBase.x + vertexId) * LUMINA_UI_VERTEX_BYTES;
+    const uint offset = (gUi.vertexBase + vertexId) * LUMINA_UI_VERTEX_BYTES;
     const float2 pixel = asfloat(gVertices.Load2(offset));
     const float2 uv = asfloat(gVertices.Load2(offset + 8u));
     const uint packed = gVertices.Load(offset + 16u);
     Varyings output;
-    output.position = float4(pixel * gUi.scaleTranslate.xy + gUi.scaleTranslate.zw, 0.0, 1.0);
+    output.position = float4(pixel * gUi.scale + gUi.translate, 0.0, 1.0);
     output.uv = uv;
     // ImGui packs colours as R in the low byte (IM_COL32).
     output.color = float4(packed & 0xFFu, (packed >> 8) & 0xFFu, (packed >> 16) & 0xFFu, packed >> 24) / 255.0;

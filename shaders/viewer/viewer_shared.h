@@ -13,12 +13,18 @@ LUMINA_GPU_NAMESPACE_BEGIN
 #define LUMINA_UI_VERTEX_BYTES 20
 
 struct UiConstants {
-    float4 scaleTranslate; // clip = pixel * xy + zw (y down in pixels, up in clip space)
-    // x: the first vertex of the draw list. Added in the shader, not as the draw's vertex offset:
+    float2 scale;     // clip = pixel * scale + translate (y down in pixels, up in clip space)
+    float2 translate;
+    // The first vertex of the draw list. Added in the shader, not as the draw's vertex offset:
     // SV_VertexID includes that offset on Vulkan and not on D3D12.
-    uint4 vertexBase;
+    uint vertexBase;
+    uint pad0;
+    uint pad1;
+    uint pad2;
 };
 LUMINA_STATIC_ASSERT_SIZE(UiConstants, 32);
+LUMINA_STATIC_ASSERT_OFFSET(UiConstants, translate, 8);
+LUMINA_STATIC_ASSERT_OFFSET(UiConstants, vertexBase, 16);
 
 // How visualise maps a texel to a colour.
 #define LUMINA_VISUALISE_RADIANCE 0u // linear radiance: exposure, tonemap, sRGB (the composite's curve)
@@ -38,14 +44,33 @@ LUMINA_STATIC_ASSERT_SIZE(UiConstants, 32);
 #define LUMINA_VISUALISE_AXIS_Z 2u
 
 struct VisualiseConstants {
-    uint4 sizeModeLayer;  // output width, height; mode; source array layer
-    float4 rangeExposure; // scalar lo, hi; exposure scale (radiance); unused
-    uint4 probeGrid;      // probe buffers: grid width, height; entries per probe; tile width
-    uint4 slice;          // slice views: axis; SDF cascade; voxels per axis of the volume; 0
-    float4 sliceMin;      // slice views: xyz the world box the image spans; w the plane's position
-    float4 sliceMax;      //   along the axis; xyz the box's far corner; w 0
+    uint2 size;  // of the output, in pixels
+    uint mode;   // LUMINA_VISUALISE_*
+    uint layer;  // source array layer
+    float rangeLo; // LUMINA_VISUALISE_SCALAR: the value shown black
+    float rangeHi; //   and the value shown white
+    float exposureScale; // LUMINA_VISUALISE_RADIANCE
+    float rangePadding;
+    // Probe buffers.
+    uint2 probeGrid;      // probes across and down
+    uint entriesPerProbe;
+    uint tileWidth;       // entries across a probe's tile in the image
+    // Slice views.
+    uint sliceAxis; // LUMINA_VISUALISE_AXIS_*
+    uint sdfCascade;
+    uint sliceDims; // voxels per axis of the volume
+    uint slicePadding;
+    float3 sliceMin;     // the world box the image spans
+    float slicePosition; // of the plane along the axis
+    float3 sliceMax;     // the box's far corner
+    float sliceMaxPadding;
 };
 LUMINA_STATIC_ASSERT_SIZE(VisualiseConstants, 96);
+LUMINA_STATIC_ASSERT_OFFSET(VisualiseConstants, rangeLo, 16);
+LUMINA_STATIC_ASSERT_OFFSET(VisualiseConstants, probeGrid, 32);
+LUMINA_STATIC_ASSERT_OFFSET(VisualiseConstants, sliceAxis, 48);
+LUMINA_STATIC_ASSERT_OFFSET(VisualiseConstants, sliceMin, 64);
+LUMINA_STATIC_ASSERT_OFFSET(VisualiseConstants, sliceMax, 80);
 
 LUMINA_GPU_NAMESPACE_END
 

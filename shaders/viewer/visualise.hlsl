@@ -26,7 +26,7 @@ void main(uint3 id : SV_DispatchThreadID) {
 [numthreads(LUMINA_VISUALISE_GROUP_SIZE, LUMINA_VISUALISE_GROUP_SIZE, 1)]
 void arrayLayer(uint3 id : SV_DispatchThreadID) {
     if (!outside(id.xy)) {
-        const float4 value = gSourceArray.Load(int4(id.xy, gVisualise.sizeModeLayer.w, 0));
+        const float4 value = gSourceArray.Load(int4(id.xy, gVisualise.layer, 0));
         gOutput[id.xy] = float4(display(value), 1.0);
     }
 }
@@ -42,7 +42,7 @@ void uintTexture(uint3 id : SV_DispatchThreadID) {
 void probeMap(uint3 id : SV_DispatchThreadID) {
     uint probe, entry;
     if (probeEntry(id.xy, probe, entry)) {
-        gOutput[id.xy] = float4(display(gProbeTexels[probe * gVisualise.probeGrid.z + entry]), 1.0);
+        gOutput[id.xy] = float4(display(gProbeTexels[probe * gVisualise.entriesPerProbe + entry]), 1.0);
     }
 }
 
@@ -50,6 +50,6 @@ void probeMap(uint3 id : SV_DispatchThreadID) {
 void probeTable(uint3 id : SV_DispatchThreadID) {
     uint probe, entry;
     if (probeEntry(id.xy, probe, entry)) {
-        gOutput[id.xy] = float4(display(gProbeScalars[probe * gVisualise.probeGrid.z + entry].xxxx), 1.0);
+        gOutput[id.xy] = float4(display(gProbeScalars[probe * gVisualise.entriesPerProbe + entry].xxxx), 1.0);
     }
 }

@@ -34,7 +34,7 @@ Texture2D<uint> gTileOwner : register(t5); // one texel per atlas tile: its card
 // card's bounds hold it; ~1u - 1 (a second sentinel) off the image.
 #define LUMINA_OFF_IMAGE 0xFFFFFFFEu
 uint pixelCard(int2 p) {
-    if (any(p < 0) || any(p >= int2(gVisualise.sizeModeLayer.xy))) {
+    if (any(p < 0) || any(p >= int2(gVisualise.size))) {
         return LUMINA_OFF_IMAGE;
     }
     const float4 position = gPosition.Load(int3(p, 0));
@@ -77,7 +77,7 @@ void atlas(uint3 id : SV_DispatchThreadID) {
     float3 color = layer;
     if (card != LUMINA_NO_CARD) {
         const uint4 rect = gCards[card].atlasRect;
-        const uint width = max(1u, gVisualise.sizeModeLayer.x / 512u * LUMINA_ATLAS_OUTLINE_PER_512);
+        const uint width = max(1u, gVisualise.size.x / 512u * LUMINA_ATLAS_OUTLINE_PER_512);
         const uint2 local = id.xy - rect.xy;
         const bool edge = any(local < width) || any(local + width >= rect.zw);
         color = edge ? idColor(card) : lerp(layer, idColor(card), LUMINA_CARD_TINT);

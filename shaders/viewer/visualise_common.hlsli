@@ -22,17 +22,17 @@ float3 idColor(uint id) {
 }
 
 float3 display(float4 value) {
-    const uint mode = gVisualise.sizeModeLayer.z;
+    const uint mode = gVisualise.mode;
     if (mode == LUMINA_VISUALISE_RADIANCE) {
-        return tonemapToDisplay3(value.rgb, gVisualise.rangeExposure.z);
+        return tonemapToDisplay3(value.rgb, gVisualise.exposureScale);
     }
     if (mode == LUMINA_VISUALISE_NORMAL) {
         return saturate(value.xyz * 0.5 + 0.5);
     }
     if (mode == LUMINA_VISUALISE_SCALAR || mode == LUMINA_VISUALISE_ALPHA) {
         const float v = mode == LUMINA_VISUALISE_SCALAR ? value.x : value.w;
-        const float lo = gVisualise.rangeExposure.x;
-        const float hi = gVisualise.rangeExposure.y;
+        const float lo = gVisualise.rangeLo;
+        const float hi = gVisualise.rangeHi;
         return saturate((v - lo) / max(hi - lo, 1e-20)).xxx;
     }
     if (mode == LUMINA_VISUALISE_ID) {
@@ -42,7 +42,7 @@ float3 display(float4 value) {
 }
 
 bool outside(uint2 id) {
-    return id.x >= gVisualise.sizeModeLayer.x || id.y >= gVisualise.sizeModeLayer.y;
+    return id.x >= gVisualise.size.x || id.y >= gVisualise.size.y;
 }
 
 // Probe p = (px, py) owns a tile tileWidth entries wide at (px tileWidth, py tileHeight); entry i of
@@ -55,8 +55,8 @@ bool probeEntry(uint2 id, out uint probe, out uint entry) {
     if (outside(id)) {
         return false;
     }
-    const uint perProbe = gVisualise.probeGrid.z;
-    const uint tileWidth = gVisualise.probeGrid.w;
+    const uint perProbe = gVisualise.entriesPerProbe;
+    const uint tileWidth = gVisualise.tileWidth;
     const uint tileHeight = (perProbe + tileWidth - 1u) / tileWidth;
     const uint2 tile = uint2(id.x / tileWidth, id.y / tileHeight);
     probe = tile.y * gVisualise.probeGrid.x + tile.x;
@@ -71,10 +71,10 @@ bool probeEntry(uint2 id, out uint probe, out uint entry) {
 // Slice views: the world point at uv (0..1 across and down the image) of the plane through
 // sliceMin.w across the axis, over the box [sliceMin, sliceMax]; see LUMINA_VISUALISE_AXIS_X.
 float3 slicePoint(float2 uv) {
-    const uint axis = gVisualise.slice.x;
+    const uint axis = gVisualise.sliceAxis;
     const uint across = axis == LUMINA_VISUALISE_AXIS_X ? 2u : 0u;
     const uint up = axis == LUMINA_VISUALISE_AXIS_Y ? 2u : 1u;
-    const float onAxis = gVisualise.sliceMin.w;
+    const float onAxis = gVisualise.slicePosition;
     const float onAcross = lerp(gVisualise.sliceMin[across], gVisualise.sliceMax[across], uv.x);
     const float onUp = lerp(gVisualise.sliceMax[up], gVisualise.sliceMin[up], uv.y); // +up at the top
     // Built by selection, not by storing to p[axis]: vkd3d's DXBC compiler cannot store to a

@@ -28,13 +28,13 @@ void radiosityProbes(uint3 id : SV_DispatchThreadID) {
     if (outside(id.xy)) {
         return;
     }
-    const RadiosityProbe probe = gProbes[id.y * gVisualise.sizeModeLayer.x + id.x];
+    const RadiosityProbe probe = gProbes[id.y * gVisualise.size.x + id.x];
     float3 color = float3(0.0, 0.0, 0.0);
     if (probe.normalAndValid.w != 0.0) {
         const float3 n = normalize(probe.normalAndValid.xyz);
         const float3 irradiance =
             float3(shL1Irradiance(probe.r, n), shL1Irradiance(probe.g, n), shL1Irradiance(probe.b, n));
-        color = display(gVisualise.sizeModeLayer.z == LUMINA_VISUALISE_NORMAL ? float4(n, 1.0)
+        color = display(gVisualise.mode == LUMINA_VISUALISE_NORMAL ? float4(n, 1.0)
                                                                              : float4(irradiance, 1.0));
     }
     gOutput[id.xy] = float4(color, 1.0);
@@ -47,13 +47,13 @@ void voxelSlice(uint3 id : SV_DispatchThreadID) {
     }
     // Three panes across (the axes), two down (the signs): face 2 axis + sign.
     const float2 panes = float2(3.0, 2.0);
-    const float2 inImage = (float2(id.xy) + 0.5) / float2(gVisualise.sizeModeLayer.xy) * panes;
+    const float2 inImage = (float2(id.xy) + 0.5) / float2(gVisualise.size) * panes;
     const uint2 pane = min(uint2(inImage), uint2(2, 1));
     const uint face = 2u * pane.x + pane.y;
     const float3 p = slicePoint(inImage - float2(pane));
-    const uint dims = gVisualise.slice.z;
-    const float3 box = gVisualise.sliceMax.xyz - gVisualise.sliceMin.xyz;
-    const uint3 voxel = min(uint3(max((p - gVisualise.sliceMin.xyz) / box, 0.0) * float(dims)), dims - 1u);
+    const uint dims = gVisualise.sliceDims;
+    const float3 box = gVisualise.sliceMax - gVisualise.sliceMin;
+    const uint3 voxel = min(uint3(max((p - gVisualise.sliceMin) / box, 0.0) * float(dims)), dims - 1u);
     const float4 texel = gVoxelLighting.Load(int4(face * dims + voxel.x, voxel.y, voxel.z, 0));
     const float3 empty = float3(LUMINA_EMPTY_VOXEL, LUMINA_EMPTY_VOXEL, LUMINA_EMPTY_VOXEL);
     const float3 color = texel.a > 0.0 ? display(float4(texel.rgb, 1.0)) : empty;

@@ -20,7 +20,7 @@ StructuredBuffer<ScreenProbe> gProbes : register(t2);
 void rayDirections(uint3 id : SV_DispatchThreadID) {
     uint probe, entry;
     if (probeEntry(id.xy, probe, entry)) {
-        const ProbeRay ray = gRays[probe * gVisualise.probeGrid.z + entry];
+        const ProbeRay ray = gRays[probe * gVisualise.entriesPerProbe + entry];
         const float3 color = ray.info.z != 0u ? saturate(ray.directionAndWeight.xyz * 0.5 + 0.5) : float3(0.0, 0.0, 0.0);
         gOutput[id.xy] = float4(color, 1.0);
     }

@@ -30,11 +30,11 @@ void main(uint3 id : SV_DispatchThreadID) {
     if (outside(id.xy)) {
         return;
     }
-    const uint c = min(gVisualise.slice.y, sdfGlobalCascadeCount() - 1u);
+    const uint c = min(gVisualise.sdfCascade, sdfGlobalCascadeCount() - 1u);
     const SdfGlobalCascade cascade = gSdfScene.cascades[c];
-    const float voxel = cascade.minAndVoxelSize.w;
-    const float maxDistance = cascade.maxAndMaxDistance.w;
-    const float2 uv = (float2(id.xy) + 0.5) / float2(gVisualise.sizeModeLayer.xy);
+    const float voxel = cascade.voxelSize;
+    const float maxDistance = cascade.maxDistance;
+    const float2 uv = (float2(id.xy) + 0.5) / float2(gVisualise.size);
     const float d = sdfSampleCascade(c, slicePoint(uv));
     float3 color = magma(0.5 + 0.5 * d / maxDistance);
     const float inVoxels = abs(d) / voxel;

@@ -94,9 +94,9 @@ TEST(DdgiVolumes, AScrolledCascadeKeepsItsProbesAndResetsTheEnteredPlanes) {
     EXPECT_EQ(scroll.enteredMax, glm::uvec3(8, 0, 1)); // z: the first plane is new
     // Lattice point c of `after` is the world point of c + move in `before`: the same slot.
     gpu::DdgiVolumeInfo was{}, now{};
-    was.counts = now.counts = gpu::uint4(8, 8, 8, 0);
-    was.scroll = gpu::uint4(6, 0, 0, 0);
-    now.scroll = gpu::uint4(scroll.offset, 0);
+    was.counts = now.counts = gpu::uint3(8, 8, 8);
+    was.scroll = gpu::uint3(6, 0, 0);
+    now.scroll = scroll.offset;
     const glm::uvec3 c(1, 4, 2);
     EXPECT_EQ(gpu::ddgiSlotOfLattice(now, c),
               gpu::ddgiSlotOfLattice(was, c + glm::uvec3(3, 0, 0) - glm::uvec3(0, 0, 1)));

@@ -33,7 +33,7 @@ TEST(DeferredLights, FirstSunAndFirstFourPointOrSpotLightsCastShadows) {
     const uint32_t none = LUMINA_SHADOW_SLOT_NONE;
     const std::vector<uint32_t> slots = {0, 0, 1, none, 2, 3, none, none};
     for (size_t i = 0; i < lights.size(); ++i) {
-        EXPECT_EQ(setup.lights[i].shadow.x, slots[i]) << "light " << i;
+        EXPECT_EQ(setup.lights[i].shadowSlot, slots[i]) << "light " << i;
         EXPECT_EQ(gpu::lightType(setup.lights[i].light), lights[i].type == T::Directional
                                                              ? LUMINA_LIGHT_DIRECTIONAL
                                                          : lights[i].type == T::Point ? LUMINA_LIGHT_POINT

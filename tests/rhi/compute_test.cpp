@@ -79,7 +79,8 @@ TEST_P(ComputeTest, WritePatternUsesEveryBindingKind) {
     using gpu::WritePatternPush;
     constexpr uint32_t kCount = 100, kWidth = 8, kHeight = 6;
     const WritePatternPush push{kCount, 1234, kWidth, kHeight};
-    const WritePatternConstants constants{.multiplier = {2, 3, 4, 5}, .scale = {0.5f, 0.25f, 0, 0}};
+    const WritePatternConstants constants{
+        .multiplier = {2, 3, 4, 5}, .elementScale = 0.5f, .texelW = 0.25f, .pad0 = 0.0f, .pad1 = 0.0f};
     std::vector<PatternElement> input(kCount);
     for (uint32_t i = 0; i < kCount; ++i) {
         input[i].a = {i, i + 1, i * 2, 9};

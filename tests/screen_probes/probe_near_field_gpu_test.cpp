@@ -238,7 +238,7 @@ TEST_P(ProbeNearFieldGpuTest, WithoutCacheOrDistanceTheNearFieldIsSkippedAndNoth
     wrongLayer.finalLighting = view.voxelLighting;
     refused(wrongLayer, "final lighting");
     gi::SurfaceCacheView noGrid = view;
-    noGrid.voxelGrid.dims = glm::uvec4(0);
+    noGrid.voxelGrid.dims = glm::uvec3(0);
     refused(noGrid, "voxel grid");
     list->end();
 }
@@ -247,7 +247,7 @@ TEST_P(ProbeNearFieldGpuTest, WithoutCacheOrDistanceTheNearFieldIsSkippedAndNoth
 // read-back voxel lighting (voxelLightingTrilinear in voxel_lighting_sampling.hlsli): 0 where the
 // lookup finds no surface.
 float voxelCoverage(const std::vector<glm::vec4>& voxels, const gpu::VoxelGridInfo& grid, glm::vec3 p) {
-    const glm::vec3 local = (p - glm::vec3(grid.minAndVoxelSize)) / grid.minAndVoxelSize.w - 0.5f;
+    const glm::vec3 local = (p - grid.boxMin) / grid.voxelSize - 0.5f;
     const glm::ivec3 base(glm::floor(local));
     const glm::vec3 f = local - glm::vec3(base);
     float weight = 0.0f;
@@ -282,7 +282,7 @@ TEST_P(ProbeNearFieldGpuTest, DISABLED_PrintFarHitVoxelCoverage) {
     const auto probes = harness.read<gpu::ScreenProbe>(r.probes[harness.probes().current()]);
     const std::vector<glm::vec4> voxels = harness.cache().readVoxelLighting();
     const gpu::VoxelGridInfo& grid = harness.cache().voxelLighting().grid();
-    const float voxel = grid.minAndVoxelSize.w;
+    const float voxel = grid.voxelSize;
     uint32_t farHits = 0, atHit = 0, leaned = 0, walked = 0;
     for (size_t i = 0; i < hits.size(); ++i) {
         if (probes[i / r.raysPerProbe].info.x != LUMINA_SP_PROBE_VALID || hits[i].ids.z != 0) {
@@ -390,8 +390,7 @@ TEST_P(ProbeNearFieldPathTracerGpuTest, DISABLED_PrintAgainstThePathTracer) {
             first = false;
         }
         const gpu::SdfSceneInfo grid = harness.sdf().sceneInfo();
-        const float diagonal =
-            glm::length(glm::vec3(grid.globalMaxAndMaxDistance) - glm::vec3(grid.globalMinAndVoxelSize));
+        const float diagonal = glm::length(grid.globalMax - grid.globalMin);
         gather.print(std::string(config.name) + " (" +
                      std::to_string(config.nearField.value_or(
                          gi::ScreenProbeSettings::kNearFieldGridFraction * diagonal)) +

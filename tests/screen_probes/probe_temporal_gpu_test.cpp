@@ -195,7 +195,7 @@ TEST_P(ProbeTemporalGpuTest, ProbeHistoryIsKeptOnTheSameSurfaceAndRejectedWhereP
             const gpu::ScreenProbe& old = second.probes[oldIndex];
             const glm::vec3 offset = glm::vec3(old.positionAndDepth) - glm::vec3(probe.positionAndDepth);
             const float depth = probe.positionAndDepth.w;
-            const float cell = 8.0f * 2.0f * before.positionAndTanHalfFovY.w * depth / float(kSize);
+            const float cell = 8.0f * 2.0f * before.tanHalfFovY * depth / float(kSize);
             matches =
                 old.info.x == LUMINA_SP_PROBE_VALID &&
                 std::abs(glm::dot(offset, glm::vec3(probe.normal))) <=

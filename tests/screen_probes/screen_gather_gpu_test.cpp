@@ -220,8 +220,7 @@ TEST_P(ScreenGatherGpuTest, DISABLED_PrintPassTimes) {
         }
     }
     const gpu::SdfSceneInfo grid = harness.sdf().sceneInfo();
-    const float diagonal =
-        glm::length(glm::vec3(grid.globalMaxAndMaxDistance) - glm::vec3(grid.globalMinAndVoxelSize));
+    const float diagonal = glm::length(grid.globalMax - grid.globalMin);
     const float near =
         settings.nearFieldDistance.value_or(gi::ScreenProbeSettings::kNearFieldGridFraction * diagonal);
     std::cout << device().adapter().name << ", " << width << "x" << height << ", near field "

@@ -68,8 +68,8 @@ public:
           sdf_(device, scene_, sdfs), probes_(device, width, height, settings), camera_(scene_.camera),
           list_(device.createCommandList()), voxelDims_(voxelDims) {
         const gpu::SdfSceneInfo grid = sdf_.sceneInfo();
-        voxelMin_ = glm::vec3(grid.globalMinAndVoxelSize);
-        voxelMax_ = glm::vec3(grid.globalMaxAndMaxDistance);
+        voxelMin_ = grid.globalMin;
+        voxelMax_ = grid.globalMax;
         voxels_ = device.createTexture({.dimension = rhi::TextureDimension::Texture3D,
                                         .format = rhi::Format::RGBA16_FLOAT,
                                         .width = voxelDims,
@@ -140,9 +140,8 @@ public:
             }
             if (cacheVolumeAsPlain_) {
                 const gpu::VoxelGridInfo& grid = cache_->voxelLighting().grid();
-                const glm::vec3 lo(grid.minAndVoxelSize);
-                voxels = {cache_->voxelLighting().volume(), lo,
-                          lo + glm::vec3(grid.dims) * grid.minAndVoxelSize.w};
+                const glm::vec3 lo = grid.boxMin;
+                voxels = {cache_->voxelLighting().volume(), lo, lo + glm::vec3(grid.dims) * grid.voxelSize};
             }
         }
         rhi::TextureHandle sky = gpuScene_.sky;

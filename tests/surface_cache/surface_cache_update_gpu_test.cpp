@@ -92,9 +92,9 @@ TEST_P(SurfaceCacheUpdateGpu, SkipsWhatDidNotChangeAndRestartsOnAMove) {
 
 TEST(SurfaceCacheVoxelGrid, CoversTheBoundsWithAVoxelOfMargin) {
     const gpu::VoxelGridInfo grid = voxelGridOver({-2.0f, -1.0f, 0.0f}, {2.0f, 1.0f, 0.5f}, 64);
-    EXPECT_FLOAT_EQ(grid.minAndVoxelSize.w, 4.0f / 62.0f);
-    EXPECT_EQ(grid.dims, glm::uvec4(64, 64, 64, 0));
-    EXPECT_FLOAT_EQ(grid.minAndVoxelSize.x, -2.0f - 4.0f / 62.0f);
+    EXPECT_FLOAT_EQ(grid.voxelSize, 4.0f / 62.0f);
+    EXPECT_EQ(grid.dims, glm::uvec3(64, 64, 64));
+    EXPECT_FLOAT_EQ(grid.boxMin.x, -2.0f - 4.0f / 62.0f);
     EXPECT_THROW(voxelGridOver({0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 0.0f}, 64), std::invalid_argument);
     EXPECT_THROW(voxelGridOver({0.0f, 0.0f, 0.0f}, {1.0f, 1.0f, 1.0f}, 3), std::invalid_argument);
     EXPECT_THROW(voxelGridOver({0.0f, 0.0f, 0.0f}, {1.0f, NAN, 1.0f}, 64), std::invalid_argument);
