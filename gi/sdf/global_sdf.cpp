@@ -24,15 +24,20 @@ float boxDistance(const glm::vec3& p, const glm::vec3& lo, const glm::vec3& hi) 
     return glm::length(glm::max(glm::max(lo - p, glm::vec3(0.0f)), p - hi));
 }
 
-// Unit gradient of a volume's field at p, from tetrahedral differences e apart (four samples);
-// zero where the differences vanish (the middle of a thin slab).
-glm::vec3 unitGradient(const SdfAtlas& atlas, uint32_t volume, const glm::vec3& p, float e) {
+// Gradient of a volume's field at p, from tetrahedral differences e apart (four samples).
+glm::vec3 gradientAt(const SdfAtlas& atlas, uint32_t volume, const glm::vec3& p, float e) {
     const glm::vec3 corners[4] = {
         {1.0f, -1.0f, -1.0f}, {-1.0f, -1.0f, 1.0f}, {-1.0f, 1.0f, -1.0f}, {1.0f, 1.0f, 1.0f}};
-    glm::vec3 gradient(0.0f);
+    glm::vec3 sum(0.0f);
     for (const glm::vec3& corner : corners) {
-        gradient += corner * sampleSdf(atlas, volume, p + e * corner);
+        sum += corner * sampleSdf(atlas, volume, p + e * corner);
     }
+    return sum / (4.0f * e);
+}
+
+// Its direction; zero where the differences vanish (the middle of a thin slab).
+glm::vec3 unitGradient(const SdfAtlas& atlas, uint32_t volume, const glm::vec3& p, float e) {
+    const glm::vec3 gradient = gradientAt(atlas, volume, p, e);
     return gradient / std::max(glm::length(gradient), 1e-30f);
 }
 
@@ -75,7 +80,15 @@ float thinSolidShell(const SdfAtlas& atlas, uint32_t volume, const glm::vec3& p,
     // distance there, and once more by what is left.
     glm::vec3 x = glm::clamp(p, glm::vec3(desc.volumeMinAndVoxelSize) + voxel,
                              glm::vec3(desc.volumeMaxAndInvVoxelSize) - voxel);
-    const glm::vec3 n = unitGradient(atlas, volume, x, e);
+    // A distance changes by at most what one moves: a steeper field is the sign flip a solid's
+    // missing face leaves in its SDF (a block without its bottom, a wall without the faces it
+    // shares with the floor), not a thin part, and keeps its distance.
+    const glm::vec3 gradient = gradientAt(atlas, volume, x, e);
+    const float slope = glm::length(gradient);
+    if (slope > LUMINA_SDF_THIN_SOLID_MAX_SLOPE) {
+        return 0.0f;
+    }
+    const glm::vec3 n = gradient / std::max(slope, 1e-30f);
     x -= n * sampleSdf(atlas, volume, x);
     x -= n * sampleSdf(atlas, volume, x);
     // Most voxels lie beside a face of a thick solid: one sample straight in proves it.
@@ -84,17 +97,20 @@ float thinSolidShell(const SdfAtlas& atlas, uint32_t volume, const glm::vec3& p,
     }
     // Else down the gradient, a quarter of the half thickness a step: the depth grows by a step
     // each time until the middle of the solid (a straight line from a point near an edge would
-    // run under the other face and stay shallow). Stop once deep enough, or when the samples
-    // leave the solid on its far side. The surface point counts as depth 0, so a solid thinner
-    // than a step, which every sample misses, gets the whole shell.
+    // run under the other face and stay shallow). Stop once deep enough, or once a step inside
+    // gets no deeper (past the middle of a thin part) or leaves the solid. The surface point
+    // counts as depth 0, so a solid thinner than a step, which every sample misses, gets the
+    // whole shell.
     const float step = 0.25f * halfThickness;
     float deepest = std::min(distance, 0.0f);
+    float last = 0.0f;
     for (uint32_t i = 0; i < LUMINA_SDF_THIN_SOLID_STEPS; ++i) {
         x -= unitGradient(atlas, volume, x, e) * step;
         const float s = sampleSdf(atlas, volume, x);
-        if (s > 0.0f && deepest < 0.0f) {
+        if (s >= last && last < 0.0f) {
             break;
         }
+        last = s;
         deepest = std::min(deepest, s);
         if (deepest <= -halfThickness) {
             break;
@@ -150,7 +166,8 @@ GlobalSdf composeGlobalSdf(const SdfAtlas& atlas, std::span<const SdfInstance> i
                     for (uint32_t i = 0; i < prepared.size(); ++i) {
                         const PreparedInstance& inst = prepared[i];
                         // Everything of the instance lies in its world box: it cannot be nearer.
-                        if (boxDistance(p, inst.worldMin, inst.worldMax) - inst.cullShell >= best) {
+                        const float toBox = boxDistance(p, inst.worldMin, inst.worldMax);
+                        if (toBox - inst.cullShell >= best) {
                             continue;
                         }
                         const glm::vec3 local(inst.worldToMesh * glm::vec4(p, 1.0f));
@@ -159,11 +176,18 @@ GlobalSdf composeGlobalSdf(const SdfAtlas& atlas, std::span<const SdfInstance> i
                         const float weight = inst.closed ? gpu::sdfThinSolidShellWeight(d, settings.voxelSize,
                                                                                         settings.maxDistance)
                                                          : 0.0f;
+                        float thin = 0.0f;
                         if (weight > 0.0f && d - thinHalfThickness < best) {
-                            d -= weight * inst.scale *
-                                 thinSolidShell(atlas, inst.volume, local, sampled,
-                                                thinHalfThickness / inst.scale);
+                            thin = weight * inst.scale *
+                                   thinSolidShell(atlas, inst.volume, local, sampled,
+                                                  thinHalfThickness / inst.scale);
                         }
+                        // Without a thin shell the box test holds as before (a sample can round
+                        // below it).
+                        if (thin == 0.0f && toBox - inst.shell >= best) {
+                            continue;
+                        }
+                        d -= thin;
                         if (d < best) {
                             best = d;
                             bestInstance = i;

@@ -43,13 +43,16 @@ struct SdfVolumeDesc {
 // field cannot cross it. Thicker solids keep their distance.
 #define LUMINA_SDF_THIN_SOLID_HALF_THICKNESS_VOXELS 0.5f
 // The depth is looked for from the nearest surface point down the field's gradient, in at most
-// this many steps of a quarter of that half thickness each (twice the half thickness: at a
-// box's edge or corner the walk starts along the diagonal and turns inwards).
-#define LUMINA_SDF_THIN_SOLID_STEPS 8u
+// this many steps of a quarter of that half thickness each (three half thicknesses: at a box's
+// corner the walk starts along the diagonal, and trilinear samples round the corner).
+#define LUMINA_SDF_THIN_SOLID_STEPS 12u
 // The shell applies in full up to this many global voxels from the solid and fades to nothing
 // over as many more; beyond, the nearest-point estimate of the mesh SDF's lower bound grows too
 // rough to judge the depth, and the far field's steps do not need it.
 #define LUMINA_SDF_THIN_SOLID_BAND_VOXELS 2.0f
+// Where the field at the voxel is steeper than this (a distance changes by at most what one
+// moves), it is the sign flip of a solid's missing face, not a thin part: no shell.
+#define LUMINA_SDF_THIN_SOLID_MAX_SLOPE 1.5f
 
 // Per-dispatch facts about the atlas texture, for whoever samples it.
 struct SdfAtlasInfo {

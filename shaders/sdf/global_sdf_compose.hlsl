@@ -2,8 +2,8 @@
 // Composes bricks of the global SDF from the mesh SDFs under each instance's transform: the
 // GPU twin of composeGlobalSdf (gi/sdf/global_sdf.cpp), same culling, same order, same
 // clamps, same shells around open volumes (SdfInstanceDesc::worldMax.w) and thin solids
-// (thin_solid_shell.hlsli). One 4x4x4 group per brick of the list; each brick carries the instances that can
-// reach it (gi/sdf/global_sdf_bricks.h), ascending, so the result never depends on which
+// (thin_solid_shell.hlsli). One 4x4x4 group per brick of the list; each brick carries the
+// instances that can reach it (gi/sdf/global_sdf_bricks.h), ascending, so the result never depends on which
 // bricks a dispatch holds. Bricks of every cascade share one dispatch (GlobalSdfBrick names its
 // cascade).
 #include "common/bindings.hlsli"
@@ -29,10 +29,8 @@ LUMINA_UAV_FORMAT(rg32f) RWTexture3D<float2> gGlobalSdf : register(u0);
 static const uint kBrickCoordBits = 10u;
 static const uint kBrickCoordMask = (1u << kBrickCoordBits) - 1u;
 
-[numthreads(LUMINA_SDF_BRICK_SIZE, LUMINA_SDF_BRICK_SIZE, LUMINA_SDF_BRICK_SIZE)] void
-main(uint3 groupId
-     : SV_GroupID, uint3 threadId
-     : SV_GroupThreadID) {
+[numthreads(LUMINA_SDF_BRICK_SIZE, LUMINA_SDF_BRICK_SIZE, LUMINA_SDF_BRICK_SIZE)] void main(
+    uint3 groupId : SV_GroupID, uint3 threadId : SV_GroupThreadID) {
     uint brickIndex = groupId.y * gConstants.groupsPerRow + groupId.x;
     if (brickIndex >= gConstants.brickCount) {
         return;
@@ -67,7 +65,8 @@ main(uint3 groupId
         bool closed = (volume.dims.w & LUMINA_SDF_VOLUME_OPEN) == 0u;
         float cullShell = closed ? thinHalfThickness : shell;
         // Everything of the instance lies in its world box: it cannot be nearer.
-        if (sdfBoxDistance(p, instance.worldMinAndScale.xyz, instance.worldMax.xyz) - cullShell >= best) {
+        float boxDistance = sdfBoxDistance(p, instance.worldMinAndScale.xyz, instance.worldMax.xyz);
+        if (boxDistance - cullShell >= best) {
             continue;
         }
         float scale = instance.worldMinAndScale.w;
@@ -75,11 +74,16 @@ main(uint3 groupId
         float sampled = sdfSampleVolume(volume, gSdfScene.invAtlasDims.xyz, local);
         float d = sampled * scale - shell;
         float weight = closed ? sdfThinSolidShellWeight(d, voxelSize, maxDistance) : 0.0f;
+        float thin = 0.0f;
         if (weight > 0.0f && d - thinHalfThickness < best) {
-            d -= weight * scale *
-                 sdfThinSolidShell(volume, gSdfScene.invAtlasDims.xyz, local, sampled,
-                                   thinHalfThickness / scale);
+            thin = weight * scale *
+                   sdfThinSolidShell(volume, gSdfScene.invAtlasDims.xyz, local, sampled, thinHalfThickness / scale);
         }
+        // Without a thin shell the box test holds as before (a sample can round below it).
+        if (thin == 0.0f && boxDistance - shell >= best) {
+            continue;
+        }
+        d -= thin;
         if (d < best) {
             best = d;
             bestInstance = float(index);
