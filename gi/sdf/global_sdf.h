@@ -18,6 +18,16 @@
 // pass through it. With shell = 0.5 global voxel + 0.6 mesh voxel (world units), both grid
 // voxels next to the surface are negative: a zero crossing any tracer finds. The surface
 // thickens by the shell; the culling test accounts for it.
+//
+// Thin solids: a closed volume's field is signed, but where the solid is thinner than a global
+// voxel (a 4 cm door in a grid of 13 cm voxels) no voxel centre need fall inside it, so the grid
+// never goes negative there and the far field walks through. So closed volumes contribute
+// d - w * thinSolidShell, where the solid is less than LUMINA_SDF_THIN_SOLID_HALF_THICKNESS_VOXELS
+// (half a global voxel) deep near the voxel: the shell makes up the missing depth, so the
+// solid is one voxel thick to the grid, and w (sdfThinSolidShellWeight) keeps it to the voxels
+// within a few voxels of the solid. Solids at least a voxel thick get no shell and keep their
+// true distance (a shell on every solid narrowed doorways; docs/gi.md, energy). The culling test
+// allows for the largest shell, half a voxel.
 #include "gi/sdf/sdf_atlas.h"
 
 #include <cstdint>
@@ -70,6 +80,15 @@ float instanceDistanceScale(const glm::mat4& meshToWorld);
 // The shell (world units) an instance of `volume` with distance scale `distanceScale` gets
 // in a global SDF of voxel size `globalVoxelSize`; 0 for closed volumes.
 float openSurfaceShell(const gpu::SdfVolumeDesc& volume, float distanceScale, float globalVoxelSize);
+
+// The thin-solid shell (mesh units) at mesh-space point `p` of closed volume `volume`, whose
+// sample there is `distance` (mesh units), for the half thickness `halfThickness` (mesh units)
+// the global grid needs: max(0, halfThickness + deepest), deepest the lowest sample found from
+// the nearest surface point down the field's gradient, until deep enough or out of the solid
+// again (see global_sdf.cpp). 0 where the solid is at least halfThickness deep. The compose kernel's
+// sdfThinSolidShell (shaders/sdf/thin_solid_shell.hlsli) is its GPU twin.
+float thinSolidShell(const SdfAtlas& atlas, uint32_t volume, const glm::vec3& p, float distance,
+                     float halfThickness);
 
 GlobalSdf composeGlobalSdf(const SdfAtlas& atlas, std::span<const SdfInstance> instances,
                            const GlobalSdfSettings& settings);
