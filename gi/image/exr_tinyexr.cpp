@@ -70,7 +70,11 @@ public:
         const char* error = nullptr;
         const int code = ParseEXRHeaderFromFile(&header_, &version, utf8Name(path).c_str(), &error);
         if (code != TINYEXR_SUCCESS) {
-            fail(path, "cannot read EXR header: " + takeError(error, code));
+            // tinyexr fills the header's arrays even when parsing fails (found by the fuzzer,
+            // tests/fuzz/regressions/exr_tinyexr/header_leak): free them before throwing.
+            const std::string problem = takeError(error, code);
+            FreeEXRHeader(&header_);
+            fail(path, "cannot read EXR header: " + problem);
         }
         parsed_ = true;
     }
