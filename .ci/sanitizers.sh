@@ -11,16 +11,16 @@ start=$(date +%s)
 
 targets=(
   # unit tests (ctest -L unit)
-  tests/scene/scene_tests tests/image/image_tests tests/image/exr_tinyexr_tests tests/measure/measure_tests
-  tests/rhi/rhi_state_tracker_test tests/bvh/bvh_tests tests/core/gi_core_tests tests/golden/golden_compare_test
-  tests/bench/bench_unit_tests tests/ddgi/ddgi_unit_test tests/deferred/deferred_unit_test
-  tests/pathtracer/pathtracer_tests tests/screen_probes/screen_probes_unit_test tests/sdf/sdf_tests
-  tests/sh_grid/sh_grid_unit_test tests/surface_cache/surface_cache_tests
+  scene_tests image_tests exr_tinyexr_tests measure_tests
+  rhi_state_tracker_test bvh_tests gi_core_tests golden_compare_test
+  bench_unit_tests ddgi_unit_test deferred_unit_test
+  pathtracer_tests screen_probes_unit_test sdf_tests
+  sh_grid_unit_test surface_cache_tests
   # GPU tests on lavapipe, with the Vulkan validation layer
-  tests/rhi/rhi_conformance tests/deferred/deferred_gpu_test tests/pathtracer/pathtracer_gpu_tests
-  tests/bvh/bvh_gpu_tests tests/sdf/sdf_gpu_tests
+  rhi_conformance deferred_gpu_test pathtracer_gpu_tests
+  bvh_gpu_tests sdf_gpu_tests
   # the CLI, for its smoke tests and the out-of-memory test
-  app/lumina
+  lumina
 )
 # GPU tests left out: suites of many frames (seconds to minutes each on lavapipe) and tests of
 # executables not built above (ctest lists those as *_NOT_BUILT).
