@@ -9,6 +9,7 @@
 #include "app/backends.h"
 #include "app/command.h"
 #include "rhi/error.h"
+#include "rhi/out_of_memory_error.h"
 
 namespace lumina::app {
 namespace {
@@ -123,6 +124,13 @@ int main(int argc, char** argv) {
     } catch (const lumina::app::UsageError& error) {
         std::cerr << "lumina: " << error.what() << '\n';
         return lumina::app::kExitUsage;
+    } catch (const lumina::rhi::OutOfMemoryError& error) {
+        std::cerr << "lumina: error: " << error.what()
+                  << "\n  (a smaller --size, a lower --preset or a smaller scene needs less GPU memory)\n";
+        return 1;
+    } catch (const lumina::rhi::DeviceLostError& error) {
+        std::cerr << "lumina: error: the GPU device was lost: " << error.what() << '\n';
+        return 1;
     } catch (const std::exception& error) {
         std::cerr << "lumina: error: " << error.what() << '\n';
         return 1;

@@ -1,5 +1,6 @@
 #include "rhi_d3d12/d3d12_check.h"
 
+#include "rhi/out_of_memory_error.h"
 #include "rhi_d3d12/d3d12_context.h"
 
 #include <cstdio>
@@ -87,6 +88,10 @@ bool isDeviceLoss(HRESULT hr) {
 }
 
 void check(HRESULT hr, std::string_view call) {
+    if (hr == E_OUTOFMEMORY) {
+        throw rhi::OutOfMemoryError("out of GPU memory: " + std::string(call) +
+                                    " failed: " + hresultText(hr));
+    }
     if (FAILED(hr)) {
         throw rhi::Error(std::string(call) + " failed: " + hresultText(hr));
     }

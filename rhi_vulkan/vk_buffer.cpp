@@ -36,6 +36,7 @@ VkBufferUsageFlags usageFlags(rhi::BufferUsage usage) {
 Buffer::Buffer(std::shared_ptr<Context> context, const rhi::BufferDesc& desc)
     : context_(std::move(context)), desc_(desc) {
     rhi::validateBufferDesc(desc_);
+    context_->checkAllocationSize(desc_.size, desc_.debugName);
     const VkDevice device = context_->device();
     auto info = vkStruct<VkBufferCreateInfo>(VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO);
     info.size = desc_.size;

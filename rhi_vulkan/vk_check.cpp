@@ -1,6 +1,7 @@
 #include "rhi_vulkan/vk_check.h"
 
 #include "rhi/error.h"
+#include "rhi/out_of_memory_error.h"
 
 #include <string>
 
@@ -59,6 +60,9 @@ void check(VkResult result, std::string_view call, std::string_view context) {
     }
     if (result == VK_ERROR_DEVICE_LOST) {
         throw rhi::DeviceLostError(message);
+    }
+    if (result == VK_ERROR_OUT_OF_DEVICE_MEMORY || result == VK_ERROR_OUT_OF_HOST_MEMORY) {
+        throw rhi::OutOfMemoryError("out of GPU memory: " + message);
     }
     throw rhi::Error(message);
 }

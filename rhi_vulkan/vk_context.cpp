@@ -1,6 +1,7 @@
 #include "rhi_vulkan/vk_context.h"
 
 #include "rhi/error.h"
+#include "rhi/out_of_memory_error.h"
 #include "rhi_vulkan/vk_check.h"
 #include "rhi_vulkan/vk_struct.h"
 
@@ -50,6 +51,11 @@ Context::Context(const rhi::DeviceDesc& desc)
     properties_ = properties.properties;
     subgroupSize_ = properties11.subgroupSize;
     vkGetPhysicalDeviceMemoryProperties(physicalDevice_, &memoryProperties_);
+    VkDeviceSize largestHeap = 0;
+    for (uint32_t i = 0; i < memoryProperties_.memoryHeapCount; ++i) {
+        largestHeap = std::max(largestHeap, memoryProperties_.memoryHeaps[i].size);
+    }
+    maxAllocationBytes_ = std::min<uint64_t>(properties11.maxMemoryAllocationSize, largestHeap);
     if (properties_.apiVersion < VK_API_VERSION_1_3) {
         throw rhi::Error("Vulkan adapter '" + adapter_.name + "' supports Vulkan " + adapter_.apiVersion +
                          "; Lumina needs 1.3 (dynamic rendering, synchronization2)");
@@ -225,6 +231,16 @@ void Context::createDevice() {
     }
 }
 
+void Context::checkAllocationSize(uint64_t bytes, std::string_view debugName) const {
+    if (bytes > maxAllocationBytes_) {
+        constexpr uint64_t kMiB = uint64_t(1) << 20;
+        throw rhi::OutOfMemoryError("out of GPU memory: '" + std::string(debugName) + "' needs " +
+                                    std::to_string((bytes + kMiB - 1) / kMiB) + " MiB, and " + adapter_.name +
+                                    " allocates at most " + std::to_string(maxAllocationBytes_ / kMiB) +
+                                    " MiB at once");
+    }
+}
+
 VkDeviceMemory Context::allocateMemory(const VkMemoryRequirements& requirements, rhi::MemoryType memory,
                                        std::string_view debugName) {
     // Preferred flags first, then the minimum that still works.
@@ -252,6 +268,7 @@ VkDeviceMemory Context::allocateMemory(const VkMemoryRequirements& requirements,
     if (type == kNoMemoryType) {
         throw rhi::Error("no Vulkan memory type fits " + context);
     }
+    checkAllocationSize(requirements.size, debugName);
     auto info = vkStruct<VkMemoryAllocateInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO);
     info.allocationSize = requirements.size;
     info.memoryTypeIndex = type;

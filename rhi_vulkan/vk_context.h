@@ -64,6 +64,10 @@ public:
     // across them when there is more than one, so no ownership transfers are needed.
     const std::vector<uint32_t>& queueFamilies() const { return queueFamilies_; }
 
+    // Throws rhi::OutOfMemoryError naming `debugName` when `bytes` is more than the device
+    // allocates at once (maxMemoryAllocationSize, or its largest heap): checked before a
+    // resource is created, because creating one past the limits is undefined in Vulkan.
+    void checkAllocationSize(uint64_t bytes, std::string_view debugName) const;
     // One allocation per resource; counted in allocatedBytes().
     VkDeviceMemory allocateMemory(const VkMemoryRequirements& requirements, rhi::MemoryType memory,
                                   std::string_view debugName);
@@ -94,6 +98,7 @@ private:
     VkPhysicalDeviceProperties properties_{};
     VkPhysicalDeviceMemoryProperties memoryProperties_{};
     uint32_t subgroupSize_ = 0;
+    uint64_t maxAllocationBytes_ = 0; // maxMemoryAllocationSize, at most the largest heap
     rhi::AdapterInfo adapter_;
     EnabledFeatures features_;
     VkDevice device_ = VK_NULL_HANDLE;

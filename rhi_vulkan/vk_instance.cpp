@@ -9,6 +9,10 @@
 #include <cstring>
 #include <string>
 
+#if LUMINA_SANITIZE
+#include <dlfcn.h>
+#endif
+
 namespace lumina::vulkan {
 
 namespace {
@@ -97,7 +101,24 @@ void MessageSink::report(rhi::MessageSeverity severity, std::string_view message
     }
 }
 
+#if LUMINA_SANITIZE
+namespace {
+// The sanitizer build only (.ci/sanitizers.sh): LeakSanitizer reports at exit, when the Vulkan
+// loader has already unloaded the driver and the layers, so their leaks show as "<unknown
+// module>", which no suppression can name. Loaded once more here and never unloaded, they keep
+// their names for tests/sanitizers/lsan.supp. A library that is not installed is skipped.
+void keepVulkanLibrariesLoaded() {
+    for (const char* library : {"libvulkan_lvp.so", "libVkLayer_khronos_validation.so"}) {
+        (void)dlopen(library, RTLD_NOW | RTLD_NODELETE);
+    }
+}
+} // namespace
+#endif
+
 Instance::Instance(const InstanceOptions& options, MessageSink* sink) {
+#if LUMINA_SANITIZE
+    keepVulkanLibrariesLoaded();
+#endif
     uint32_t loaderVersion = VK_API_VERSION_1_0;
     check(vkEnumerateInstanceVersion(&loaderVersion), "vkEnumerateInstanceVersion");
     if (loaderVersion < VK_API_VERSION_1_3) {

@@ -70,7 +70,11 @@ public:
         const char* error = nullptr;
         const int code = ParseEXRHeaderFromFile(&header_, &version, utf8Name(path).c_str(), &error);
         if (code != TINYEXR_SUCCESS) {
-            fail(path, "cannot read EXR header: " + takeError(error, code));
+            // tinyexr fills the header's arrays even when parsing fails (found by the fuzzer,
+            // tests/fuzz/regressions/exr_tinyexr/header_leak): free them before throwing.
+            const std::string problem = takeError(error, code);
+            FreeEXRHeader(&header_);
+            fail(path, "cannot read EXR header: " + problem);
         }
         parsed_ = true;
     }
@@ -168,6 +172,10 @@ Image readPixels(const std::filesystem::path& path) {
 
     EXRImage decoded;
     InitEXRImage(&decoded);
+    // On a failed decode tinyexr calls FreeEXRImage, which frees the channels' planes up to
+    // num_channels, set only on success: set first, a truncated file's planes are freed too
+    // (LeakSanitizer found it: Exr.TruncatedFileIsAnErrorNotACrash in .ci/sanitizers.sh).
+    decoded.num_channels = header.num_channels;
     const char* error = nullptr;
     const int code = LoadEXRImageFromFile(&decoded, &header, utf8Name(path).c_str(), &error);
     if (code != TINYEXR_SUCCESS) {

@@ -1,19 +1,7 @@
-// Texture images: decoded here rather than by tinygltf, only for textures a material uses,
-// always to RGBA8, with a size limit and errors that name the image.
+// Texture images: decoded (texture_decode.h) only for textures a material uses, with a
+// budget over all of them and errors that name the image.
 #include "gi/scene/gltf_internal.h"
-
-#include <memory>
-
-// stb_image compiled privately into this file (STB_IMAGE_STATIC), so it cannot clash with
-// another library of the project that carries its own copy. PNG and JPEG are glTF's formats.
-#define STB_IMAGE_STATIC
-#define STB_IMAGE_IMPLEMENTATION
-#define STBI_NO_STDIO
-#define STBI_ONLY_PNG
-#define STBI_ONLY_JPEG
-// 8192^2 texels of RGBA8 is 256 MiB: larger textures are refused rather than allocated.
-#define STBI_MAX_DIMENSIONS 8192
-#include <stb/stb_image.h>
+#include "gi/scene/texture_decode.h"
 
 namespace lumina::scene::gltf {
 
@@ -61,32 +49,22 @@ uint32_t convertTexture(const Context& context, int textureIndex, const std::str
         what + ": image " + std::to_string(imageIndex) +
         (image.uri.empty() || image.uri.rfind("data:", 0) == 0 ? "" : " '" + image.uri + "'");
     const std::span<const uint8_t> bytes = encodedBytes(context, imageIndex, imageWhat);
-    if (bytes.size() > size_t(INT32_MAX)) {
-        context.fail(imageWhat + ": larger than 2 GiB");
-    }
-    int width = 0, height = 0, channels = 0;
-    const std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
-        stbi_load_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels, 4),
-        stbi_image_free);
-    if (!pixels) {
-        context.fail(imageWhat + ": cannot decode (" + stbi_failure_reason() + ")");
-    }
-    uint64_t textureBytes = uint64_t(width) * uint64_t(height) * 4;
+    // Each image gets what the images before it left of the budget.
+    uint64_t usedBytes = 0;
     for (const Texture& texture : scene.textures) {
-        textureBytes += texture.rgba8.size();
+        usedBytes += texture.rgba8.size();
     }
-    if (textureBytes > context.options.maxTextureBytes) {
-        context.fail(imageWhat + ": decoded textures would exceed " +
-                     std::to_string(context.options.maxTextureBytes >> 20) + " MiB");
-    }
+    const uint64_t budget = context.options.maxTextureBytes;
     Texture out;
+    try {
+        out = decodeTexture(bytes, usedBytes < budget ? budget - usedBytes : 0);
+    } catch (const TextureDecodeError& error) {
+        context.fail(imageWhat + ": " + error.what());
+    }
     out.name = !image.name.empty() ? image.name
                : !image.uri.empty() && image.uri.rfind("data:", 0) != 0
                    ? image.uri
                    : "image " + std::to_string(imageIndex);
-    out.width = uint32_t(width);
-    out.height = uint32_t(height);
-    out.rgba8.assign(pixels.get(), pixels.get() + size_t(width) * size_t(height) * 4);
     imageTexture[imageIndex] = int64_t(scene.textures.size());
     scene.textures.push_back(std::move(out));
     return uint32_t(scene.textures.size() - 1);
