@@ -49,21 +49,6 @@ constexpr uint32_t kDefaultReferenceSpp = 256;
 // The path tracer under test: any seed but the reference's.
 constexpr uint32_t kPathTracerSeed = 1;
 
-std::vector<std::string> splitList(const std::string& flag, const std::string& text) {
-    std::vector<std::string> items;
-    std::stringstream stream(text);
-    for (std::string item; std::getline(stream, item, ',');) {
-        if (item.empty()) {
-            throw UsageError("--" + flag + ": empty item in '" + text + "'");
-        }
-        items.push_back(item);
-    }
-    if (items.empty()) {
-        throw UsageError("--" + flag + ": give at least one item");
-    }
-    return items;
-}
-
 // The frame time the path tracer's budgets multiply: the median over presets of lumen's median
 // frame when lumen ran (the GI technique it is the ground truth for), else of direct's, else
 // one path-traced sample. Medians over the whole run, the frame_ms the plot puts on its x axis,
@@ -129,12 +114,12 @@ int runBench(const ParsedArgs& args) {
     if (!args.positional.empty()) {
         throw UsageError("bench takes no positional arguments; name scenes with --scenes");
     }
-    const std::vector<std::string> sceneNames = splitList("scenes", args.get("scenes", kDefaultScenes));
+    const std::vector<std::string> sceneNames = parseList("scenes", args.get("scenes", kDefaultScenes));
     const std::vector<std::string> techniques =
-        splitList("techniques", args.get("techniques", kDefaultTechniques));
-    const std::vector<std::string> presets = splitList("presets", args.get("presets", kDefaultPresets));
+        parseList("techniques", args.get("techniques", kDefaultTechniques));
+    const std::vector<std::string> presets = parseList("presets", args.get("presets", kDefaultPresets));
     std::vector<double> budgets;
-    for (const std::string& item : splitList("pt-budgets", args.get("pt-budgets", kDefaultBudgets))) {
+    for (const std::string& item : parseList("pt-budgets", args.get("pt-budgets", kDefaultBudgets))) {
         const double budget = parseDouble("pt-budgets", item);
         if (!(budget > 0.0 && budget <= 1e6)) {
             throw UsageError("--pt-budgets: each budget must be in (0, 1e6], got " + item);
