@@ -29,20 +29,26 @@ std::string name(const gi::AutoCandidate& c) {
 
 } // namespace
 
+std::vector<FlagSpec> withCalibrationFlags(std::vector<FlagSpec> flags) {
+    for (FlagSpec flag : std::vector<FlagSpec>{
+             {"calibration-size", "WxH", "auto's calibration: image size (default 64x64)"},
+             {"calibration-frames", "N", "auto's calibration: frames per candidate (default 8)"},
+             {"calibration-spp", "N", "auto's calibration: samples of its reference (default 64)"}}) {
+        flags.push_back(flag);
+    }
+    return flags;
+}
+
 std::vector<FlagSpec> withAutoTechniqueFlags(std::vector<FlagSpec> flags) {
     for (FlagSpec flag : std::vector<FlagSpec>{
              {"error-budget", "E",
               "with --technique auto: the largest relMSE against the path tracer allowed"},
              {"auto-techniques", "LIST",
               "with --technique auto: the candidates (default direct,lumen,ddgi,sh-grid)"},
-             {"auto-presets", "LIST", "with --technique auto: their presets (default low,medium,high)"},
-             {"calibration-size", "WxH",
-              "with --technique auto: the calibration's image size (default 64x64)"},
-             {"calibration-frames", "N", "with --technique auto: frames per candidate (default 8)"},
-             {"calibration-spp", "N", "with --technique auto: samples of its reference (default 64)"}}) {
+             {"auto-presets", "LIST", "with --technique auto: their presets (default low,medium,high)"}}) {
         flags.push_back(flag);
     }
-    return flags;
+    return withCalibrationFlags(std::move(flags));
 }
 
 gi::CalibrationRequest calibrationRequest(const ParsedArgs& args) {

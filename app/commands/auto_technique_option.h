@@ -9,6 +9,9 @@
 
 namespace lumina::app {
 
+// --calibration-size, --calibration-frames, --calibration-spp (render and bench).
+std::vector<FlagSpec> withCalibrationFlags(std::vector<FlagSpec> flags);
+// Those and --error-budget, --auto-techniques, --auto-presets (render).
 std::vector<FlagSpec> withAutoTechniqueFlags(std::vector<FlagSpec> flags);
 
 // The calibration the flags ask for; UsageError for a bad value.

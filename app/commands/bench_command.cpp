@@ -5,6 +5,8 @@
 // log-log plot of error against frame time (scripts/plot_bench.py, python3-matplotlib).
 // docs/measurement.md.
 #include "app/command.h"
+#include "app/commands/auto_technique_option.h"
+#include "app/commands/bench_auto_check.h"
 #include "app/commands/bench_plot.h"
 #include "app/commands/scene_options.h"
 #include "app/commands/shard_option.h"
@@ -151,6 +153,18 @@ int runBench(const ParsedArgs& args) {
         args.has("cache") ? std::filesystem::path(args.get("cache")) : gi::defaultReferenceDirectory();
 
     const std::optional<gi::Shard> shard = parseShardFlag(args);
+    if (args.has("check-auto")) {
+        const double budget = args.getDouble("check-auto", 0.0);
+        if (!(budget > 0.0) || !std::isfinite(budget)) {
+            throw UsageError("--check-auto: must be a positive relMSE, got " + args.get("check-auto"));
+        }
+        if (shard) {
+            throw UsageError(
+                "--check-auto with --shard: the check needs the whole matrix; run it on the merged "
+                "results' scenes without --shard");
+        }
+        calibrationRequest(args); // its flags checked before any GPU work
+    }
     const auto changeFrames = uint32_t(args.getUint("change-frames", 0, 0, 1u << 20));
     const gi::BenchMatrix matrix{.scenes = sceneNames.size(),
                                  .techniques = techniques,
@@ -308,6 +322,13 @@ int runBench(const ParsedArgs& args) {
     } else if (!args.has("no-plot") && makeBenchPlot(csv, png)) {
         std::cout << "wrote " << png.string() << '\n';
     }
+    if (args.has("check-auto")) {
+        const std::filesystem::path autoCsv = outDir / "auto_check.csv";
+        const size_t differ = checkAutoChoices(*device, pipelines, args, scenes, matrix.realTimeTechniques(),
+                                               presets, records, autoCsv);
+        std::cout << "wrote " << autoCsv.string() << " (auto's choice differs from the matrix's on " << differ
+                  << " of " << scenes.size() << " scene(s))\n";
+    }
     uint64_t nonFinite = 0;
     for (const gi::BenchRecord& record : records) {
         nonFinite += record.run.nonFinitePixels;
@@ -333,7 +354,9 @@ Command benchCommand() {
             "lumina bench [--scenes A,B] [--techniques direct,lumen,ddgi,sh-grid,pathtracer] [--presets "
             "low,medium,high] "
             "[--pt-budgets 1,4,16] [--size WxH] [--frames N] [--reference-spp N] [--cache DIR] [--out DIR] "
-            "[--shard i/n] [--no-default-light] [--sky FILE.exr [--sky-intensity K]]",
+            "[--shard i/n] [--check-auto E [--calibration-size WxH] [--calibration-frames N] "
+            "[--calibration-spp N]] "
+            "[--no-default-light] [--sky FILE.exr [--sky-intensity K]]",
         .description =
             "For each scene, renders a path-traced reference with AOVs (or reuses the one cached for the "
             "same "
@@ -362,7 +385,7 @@ Command benchCommand() {
             "the matrix (a unit: one scene and one real-time technique at every preset; the path tracer's "
             "budgets go with the technique they multiply) and writes their rows with DIR/shard.json and no "
             "plot; `lumina merge OUT DIR...` makes one run's files from the n shards (docs/batch.md).",
-        .flags = withSceneLoadFlags(
+        .flags = withCalibrationFlags(withSceneLoadFlags(
             {{"scenes", "LIST",
               "comma-separated scenes (default cornell_box,cornell_box_point,open_top_box)"},
              {"techniques", "LIST", "direct, lumen, ddgi, sh-grid, pathtracer (default direct,pathtracer)"},
@@ -373,10 +396,15 @@ Command benchCommand() {
              {"cache", "DIR", "where references are kept (default $LUMINA_CACHE_DIR/references)"},
              {"no-plot", "", "write the CSV and JSON only"},
              shardFlag("run units i, i+n, ... of the n-way split matrix only (0 <= i < n), for lumina merge"),
+             {"check-auto", "E",
+              "after the matrix, compare what render --technique auto --error-budget E chooses per scene "
+              "(its "
+              "calibration, --calibration-*) with the matrix's cheapest configuration under E "
+              "(DIR/auto_check.csv); not with --shard"},
              {"change-frames", "N",
               "for animated scenes: play N frames of the animation, hold the pose, and measure the frames "
               "and GPU ms until each real-time run is within relMSE 0.01 of a fresh converged render of that "
-              "pose, and the frame cost moving against static (DIR/change_response.csv)"}}),
+              "pose, and the frame cost moving against static (DIR/change_response.csv)"}})),
         .run = runBench};
 }
 

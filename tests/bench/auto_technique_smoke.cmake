@@ -43,6 +43,17 @@ foreach(budget ${all_meet} ${split})
 endforeach()
 expect_match(auto2 "${OUT}" "calibration at 16x16, 4 frames per candidate, against a 16-spp path-traced reference \\(reused")
 
+# The bench's own check: the same matrix with --check-auto at the split budget (the calibration is
+# the cached one, so auto must agree with the matrix: the SH grid at low).
+run(0 bench-check bench --scenes ${scene} --techniques direct,sh-grid --presets low,medium --size 16x16 --frames 4
+    --reference-spp 16 --pt-budgets 1 --cache "${DIR}/cache/references" --out "${DIR}/check" --no-plot
+    --check-auto ${split} --calibration-size 16x16 --calibration-frames 4 --calibration-spp 16 --validation)
+expect_match(bench-check "${OUT}" "auto check ${scene}, relMSE <= [0-9.]+: auto \\(calibrated at 16x16, 4 frames\\) chooses sh-grid low, the matrix's cheapest under the budget is sh-grid low: agrees")
+if(NOT EXISTS "${DIR}/check/auto_check.csv")
+  message(FATAL_ERROR "[bench-check] no auto_check.csv")
+endif()
+run(2 check-auto-sharded bench --scenes ${scene} --check-auto 0.1 --shard 0/2 --out "${DIR}/bad")
+
 run(1 none-meets ${auto} --error-budget ${none_meet} --out "${DIR}/none.png")
 expect_match(none-meets "${ERR}" "no candidate has relMSE <=")
 run(2 no-budget render ${scene} --technique auto)
