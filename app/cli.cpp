@@ -1,10 +1,11 @@
 #include "app/cli.h"
 
-#include <charconv>
-#include <cmath>
-
 #include "app/backends.h"
 #include "rhi/error.h"
+
+#include <charconv>
+#include <cmath>
+#include <sstream>
 
 namespace lumina::app {
 
@@ -34,7 +35,8 @@ uint64_t parseUint(std::string_view flag, std::string_view text, uint64_t min, u
     uint64_t value = 0;
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (text.empty() || error != std::errc() || end != text.data() + text.size()) {
-        throw UsageError("--" + std::string(flag) + ": '" + std::string(text) + "' is not a non-negative integer");
+        throw UsageError("--" + std::string(flag) + ": '" + std::string(text) +
+                         "' is not a non-negative integer");
     }
     if (value < min || value > max) {
         throw UsageError("--" + std::string(flag) + ": " + std::string(text) + " is out of range [" +
@@ -50,6 +52,21 @@ double parseDouble(std::string_view flag, std::string_view text) {
         throw UsageError("--" + std::string(flag) + ": '" + std::string(text) + "' is not a finite number");
     }
     return value;
+}
+
+std::vector<std::string> parseList(std::string_view flag, std::string_view text) {
+    std::vector<std::string> items;
+    std::stringstream stream{std::string(text)};
+    for (std::string item; std::getline(stream, item, ',');) {
+        if (item.empty()) {
+            throw UsageError("--" + std::string(flag) + ": empty item in '" + std::string(text) + "'");
+        }
+        items.push_back(item);
+    }
+    if (items.empty()) {
+        throw UsageError("--" + std::string(flag) + ": give at least one item");
+    }
+    return items;
 }
 
 ImageSize parseSize(std::string_view flag, std::string_view text) {
@@ -88,15 +105,17 @@ ParsedArgs parseArgs(std::string_view command, const std::vector<std::string>& a
     };
 
     // A subcommand's help is `lumina NAME --help`; another tool (lumina-viewer) passes its own name.
-    const std::string helpHint = command.empty()                  ? "lumina --help"
-                                 : command.starts_with("lumina") ? std::string(command) + " --help"
-                                                                 : "lumina " + std::string(command) + " --help";
+    const std::string helpHint = command.empty() ? "lumina --help"
+                                 : command.starts_with("lumina")
+                                     ? std::string(command) + " --help"
+                                     : "lumina " + std::string(command) + " --help";
     ParsedArgs parsed;
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& arg = args[i];
         if (arg.size() < 2 || arg.compare(0, 2, "--") != 0 || arg == "--") {
             if (arg.size() > 1 && arg[0] == '-' && arg != "-") {
-                throw UsageError("unknown option '" + arg + "' (options start with --; see " + helpHint + ")");
+                throw UsageError("unknown option '" + arg + "' (options start with --; see " + helpHint +
+                                 ")");
             }
             parsed.positional.push_back(arg);
             continue;

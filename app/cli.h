@@ -1,6 +1,8 @@
 #pragma once
 // The command-line grammar every `lumina` subcommand shares: global flags, per-command
 // flags and positional arguments. A bad flag or value is a UsageError (exit code 2).
+#include "rhi/device.h"
+
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -8,8 +10,6 @@
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include "rhi/device.h"
 
 namespace lumina::app {
 
@@ -49,7 +49,8 @@ public:
     // The value of a flag that takes one; `fallback` when absent.
     std::string get(std::string_view flag, std::string_view fallback = {}) const;
     double getDouble(std::string_view flag, double fallback) const;
-    uint64_t getUint(std::string_view flag, uint64_t fallback, uint64_t min = 0, uint64_t max = UINT64_MAX) const;
+    uint64_t getUint(std::string_view flag, uint64_t fallback, uint64_t min = 0,
+                     uint64_t max = UINT64_MAX) const;
 
     void set(std::string_view flag, std::string value) { values_[std::string(flag)] = std::move(value); }
 
@@ -67,5 +68,7 @@ ParsedArgs parseArgs(std::string_view command, const std::vector<std::string>& a
 uint64_t parseUint(std::string_view flag, std::string_view text, uint64_t min = 0, uint64_t max = UINT64_MAX);
 double parseDouble(std::string_view flag, std::string_view text);
 ImageSize parseSize(std::string_view flag, std::string_view text);
+// A comma-separated list of at least one non-empty item.
+std::vector<std::string> parseList(std::string_view flag, std::string_view text);
 
 } // namespace lumina::app

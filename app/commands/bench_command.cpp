@@ -5,14 +5,19 @@
 // log-log plot of error against frame time (scripts/plot_bench.py, python3-matplotlib).
 // docs/measurement.md.
 #include "app/command.h"
+#include "app/commands/auto_technique_option.h"
+#include "app/commands/bench_auto_check.h"
+#include "app/commands/bench_plot.h"
 #include "app/commands/scene_options.h"
+#include "app/commands/shard_option.h"
+#include "gi/bench/bench_matrix.h"
 #include "gi/bench/bench_report.h"
+#include "gi/bench/bench_shards.h"
 #include "gi/bench/change_response.h"
 #include "gi/bench/reference_cache.h"
 #include "gi/bench/technique_runs.h"
 #include "gi/core/build_info.h"
 #include "gi/core/pipeline_cache.h"
-#include "gi/scene/builtin_scenes.h"
 #include "gi/scene/scene_loader.h"
 
 #include <algorithm>
@@ -22,6 +27,7 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <numeric>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -44,21 +50,6 @@ constexpr uint32_t kDefaultFrames = 16;
 constexpr uint32_t kDefaultReferenceSpp = 256;
 // The path tracer under test: any seed but the reference's.
 constexpr uint32_t kPathTracerSeed = 1;
-
-std::vector<std::string> splitList(const std::string& flag, const std::string& text) {
-    std::vector<std::string> items;
-    std::stringstream stream(text);
-    for (std::string item; std::getline(stream, item, ',');) {
-        if (item.empty()) {
-            throw UsageError("--" + flag + ": empty item in '" + text + "'");
-        }
-        items.push_back(item);
-    }
-    if (items.empty()) {
-        throw UsageError("--" + flag + ": give at least one item");
-    }
-    return items;
-}
 
 // The frame time the path tracer's budgets multiply: the median over presets of lumen's median
 // frame when lumen ran (the GI technique it is the ground truth for), else of direct's, else
@@ -106,39 +97,6 @@ void printRun(const std::string& scene, const gi::TechniqueRun& run) {
     std::cout << '\n';
 }
 
-// scripts/plot_bench.py from the source tree the built-in scenes come from.
-std::filesystem::path plotScript() {
-    if (const auto scenes = scene::findScenesDirectory()) {
-        return scenes->parent_path() / "scripts" / "plot_bench.py";
-    }
-    return {};
-}
-
-// Debian's python3 first: python3-matplotlib is installed for it, whatever else PATH holds.
-std::string pythonInterpreter() {
-    if (const char* chosen = std::getenv("LUMINA_PYTHON"); chosen && *chosen) {
-        return chosen;
-    }
-    return std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-}
-
-bool makePlot(const std::filesystem::path& csv, const std::filesystem::path& png) {
-    const std::filesystem::path script = plotScript();
-    if (script.empty() || !std::filesystem::exists(script)) {
-        std::cerr << "bench: note: no plot, scripts/plot_bench.py not found (set LUMINA_SOURCE_DIR)\n";
-        return false;
-    }
-    const std::string command = "\"" + pythonInterpreter() + "\" \"" + script.string() + "\" \"" +
-                                csv.string() + "\" \"" + png.string() + "\"";
-    if (std::system(command.c_str()) != 0) {
-        std::cerr << "bench: note: the plot failed (it needs python3-matplotlib; LUMINA_PYTHON picks the "
-                     "interpreter): "
-                  << command << '\n';
-        return false;
-    }
-    return true;
-}
-
 void printChangeResponse(const gi::ChangeResponse& r) {
     std::cout << "  " << r.scene << " / " << r.technique << " / " << r.preset << ": after " << r.changeFrames
               << " frames of change, relMSE " << number(r.relMseAtStop)
@@ -158,12 +116,12 @@ int runBench(const ParsedArgs& args) {
     if (!args.positional.empty()) {
         throw UsageError("bench takes no positional arguments; name scenes with --scenes");
     }
-    const std::vector<std::string> sceneNames = splitList("scenes", args.get("scenes", kDefaultScenes));
+    const std::vector<std::string> sceneNames = parseList("scenes", args.get("scenes", kDefaultScenes));
     const std::vector<std::string> techniques =
-        splitList("techniques", args.get("techniques", kDefaultTechniques));
-    const std::vector<std::string> presets = splitList("presets", args.get("presets", kDefaultPresets));
+        parseList("techniques", args.get("techniques", kDefaultTechniques));
+    const std::vector<std::string> presets = parseList("presets", args.get("presets", kDefaultPresets));
     std::vector<double> budgets;
-    for (const std::string& item : splitList("pt-budgets", args.get("pt-budgets", kDefaultBudgets))) {
+    for (const std::string& item : parseList("pt-budgets", args.get("pt-budgets", kDefaultBudgets))) {
         const double budget = parseDouble("pt-budgets", item);
         if (!(budget > 0.0 && budget <= 1e6)) {
             throw UsageError("--pt-budgets: each budget must be in (0, 1e6], got " + item);
@@ -194,6 +152,45 @@ int runBench(const ParsedArgs& args) {
     const std::filesystem::path cacheDir =
         args.has("cache") ? std::filesystem::path(args.get("cache")) : gi::defaultReferenceDirectory();
 
+    const std::optional<gi::Shard> shard = parseShardFlag(args);
+    if (args.has("check-auto")) {
+        const double budget = args.getDouble("check-auto", 0.0);
+        if (!(budget > 0.0) || !std::isfinite(budget)) {
+            throw UsageError("--check-auto: must be a positive relMSE, got " + args.get("check-auto"));
+        }
+        if (shard) {
+            throw UsageError(
+                "--check-auto with --shard: the check needs the whole matrix; run it on the merged "
+                "results' scenes without --shard");
+        }
+        calibrationRequest(args); // its flags checked before any GPU work
+    }
+    const auto changeFrames = uint32_t(args.getUint("change-frames", 0, 0, 1u << 20));
+    const gi::BenchMatrix matrix{.scenes = sceneNames.size(),
+                                 .techniques = techniques,
+                                 .presets = presets.size(),
+                                 .budgets = budgets.size()};
+    // The units this run takes: all, or every n-th from the shard's index on.
+    const std::vector<gi::BenchUnit> allUnits = gi::benchUnits(matrix);
+    std::vector<gi::BenchUnit> units;
+    for (size_t k = 0; k < allUnits.size(); ++k) {
+        if (!shard || k % shard->count == shard->index) {
+            units.push_back(allUnits[k]);
+        }
+    }
+    if (units.empty()) {
+        throw UsageError("--shard " + shard->text() + ": the matrix has " + std::to_string(allUnits.size()) +
+                         " units (scene x real-time technique, the path tracer going with " +
+                         "the technique its budgets multiply): use at most " +
+                         std::to_string(allUnits.size()) + " shards");
+    }
+    const auto runs = [&](size_t scene, const std::string& technique) {
+        return std::ranges::any_of(units, [&](const gi::BenchUnit& u) {
+            return u.scene == scene &&
+                   (u.technique == technique || (technique == "pathtracer" && u.withPathTracer));
+        });
+    };
+
     // Load every scene first: a typo fails before any GPU work.
     std::vector<scene::Scene> scenes;
     for (const std::string& name : sceneNames) {
@@ -212,13 +209,21 @@ int runBench(const ParsedArgs& args) {
               << "), commit " << context.commit << "\n       " << scenes.size() << " scene(s) at " << width
               << "x" << height << ", " << frames << " frames per run, references " << referenceSpp
               << " spp in " << cacheDir.string() << '\n';
+    if (shard) {
+        std::cout << "       shard " << shard->text() << ": " << units.size() << " of " << allUnits.size()
+                  << " units\n";
+    }
     rhi::ShaderLibrary shaders(*device);
     gi::PipelineCache pipelines(*device, shaders);
 
     std::vector<gi::BenchRecord> records;
     std::vector<gi::ChangeResponse> responses;
-    const auto changeFrames = uint32_t(args.getUint("change-frames", 0, 0, 1u << 20));
-    for (const scene::Scene& scene : scenes) {
+    gi::BenchShardManifest manifest{.shard = shard.value_or(gi::Shard{}), .totalRows = matrix.rowCount()};
+    for (size_t s = 0; s < scenes.size(); ++s) {
+        const scene::Scene& scene = scenes[s];
+        if (!std::ranges::any_of(units, [&](const gi::BenchUnit& u) { return u.scene == s; })) {
+            continue;
+        }
         const gi::ReferenceRequest request{.width = width, .height = height, .spp = referenceSpp};
         const gi::Reference reference = gi::loadOrRenderReference(
             *device, pipelines, scene, request, cacheDir, [&](uint32_t done, uint32_t total) {
@@ -231,33 +236,37 @@ int runBench(const ParsedArgs& args) {
 
         const gi::RunRequest run{.width = width, .height = height, .frames = frames, .seed = kPathTracerSeed};
         std::map<std::string, std::vector<double>> realTimeFrameMs;
-        for (const std::string& technique : techniques) {
-            if (technique == "pathtracer") {
+        for (const std::string& technique : matrix.realTimeTechniques()) {
+            if (!runs(s, technique)) {
                 continue;
             }
-            for (const std::string& preset : presets) {
+            for (size_t p = 0; p < presets.size(); ++p) {
+                const std::string& preset = presets[p];
                 records.push_back({scene.name,
                                    gi::runRealTime(*device, pipelines, scene, gi::parseGiTechnique(technique),
                                                    preset, run, reference),
                                    reference.path.string()});
+                manifest.rows.push_back(matrix.realTimeRow(s, technique, p));
                 printRun(scene.name, records.back().run);
                 realTimeFrameMs[technique].push_back(records.back().run.frameMs);
                 if (changeFrames > 0 && !scene.animation.empty()) {
                     responses.push_back(gi::measureChangeResponse(
                         *device, pipelines, scene, gi::parseGiTechnique(technique), preset,
                         {.width = width, .height = height, .changeFrames = changeFrames}));
+                    manifest.changeRows.push_back(manifest.rows.back());
                     printChangeResponse(responses.back());
                 }
             }
         }
-        if (contains(techniques, "pathtracer")) {
+        if (matrix.hasPathTracer() && runs(s, "pathtracer")) {
             // Equal time: as many samples per frame as fit in the real-time frame (at least one,
             // which on a slow device costs more than equal time: the row's frame_ms says so).
             const double msPerSample = gi::pathTracerMsPerSample(*device, pipelines, scene, width, height);
             const gi::TimeBase base = equalTimeBase(realTimeFrameMs, msPerSample);
             std::cout << "  " << scene.name << " / pathtracer: budgets in multiples of " << base.technique
                       << " (" << number(base.ms) << " ms), " << number(msPerSample) << " ms per sample\n";
-            for (double budget : budgets) {
+            for (size_t b = 0; b < budgets.size(); ++b) {
+                const double budget = budgets[b];
                 gi::RunRequest ptRun = run;
                 ptRun.samplesPerFrame =
                     uint32_t(std::clamp(std::floor(budget * base.ms / msPerSample), 1.0, 65536.0));
@@ -265,10 +274,25 @@ int runBench(const ParsedArgs& args) {
                 records.push_back(
                     {scene.name, gi::runPathTracer(*device, pipelines, scene, preset, ptRun, reference),
                      reference.path.string(), gi::TimeBudget{.multiple = budget, .base = base}});
+                manifest.rows.push_back(matrix.pathTracerRow(s, b));
                 printRun(scene.name, records.back().run);
             }
         }
     }
+
+    // Within one scene the path tracer's rows come last whichever unit ran them: put this
+    // run's rows in one run's order (a whole run's are already).
+    std::vector<size_t> order(records.size());
+    std::iota(order.begin(), order.end(), size_t(0));
+    std::ranges::sort(order, {}, [&](size_t i) { return manifest.rows[i]; });
+    std::vector<gi::BenchRecord> sorted;
+    std::vector<size_t> sortedRows;
+    for (size_t i : order) {
+        sorted.push_back(records[i]);
+        sortedRows.push_back(manifest.rows[i]);
+    }
+    records = std::move(sorted);
+    manifest.rows = std::move(sortedRows);
 
     const std::filesystem::path csv = outDir / "bench.csv", json = outDir / "bench.json",
                                 png = outDir / "bench.png";
@@ -280,8 +304,30 @@ int runBench(const ParsedArgs& args) {
         gi::writeChangeResponseCsv(changeCsv, responses);
         std::cout << "wrote " << changeCsv.string() << '\n';
     }
-    if (!args.has("no-plot") && makePlot(csv, png)) {
+    if (shard) {
+        manifest.run = {.scenes = sceneNames,
+                        .techniques = techniques,
+                        .presets = presets,
+                        .budgets = budgets,
+                        .width = width,
+                        .height = height,
+                        .frames = frames,
+                        .referenceSpp = referenceSpp,
+                        .changeFrames = changeFrames};
+        for (const scene::Scene& scene : scenes) {
+            manifest.run.sceneDigests.push_back(gi::sceneDigest(scene));
+        }
+        gi::writeBenchShardManifest(outDir, manifest);
+        std::cout << "wrote " << (outDir / "shard.json").string() << " (lumina merge makes the plot)\n";
+    } else if (!args.has("no-plot") && makeBenchPlot(csv, png)) {
         std::cout << "wrote " << png.string() << '\n';
+    }
+    if (args.has("check-auto")) {
+        const std::filesystem::path autoCsv = outDir / "auto_check.csv";
+        const size_t differ = checkAutoChoices(*device, pipelines, args, scenes, matrix.realTimeTechniques(),
+                                               presets, records, autoCsv);
+        std::cout << "wrote " << autoCsv.string() << " (auto's choice differs from the matrix's on " << differ
+                  << " of " << scenes.size() << " scene(s))\n";
     }
     uint64_t nonFinite = 0;
     for (const gi::BenchRecord& record : records) {
@@ -308,6 +354,8 @@ Command benchCommand() {
             "lumina bench [--scenes A,B] [--techniques direct,lumen,ddgi,sh-grid,pathtracer] [--presets "
             "low,medium,high] "
             "[--pt-budgets 1,4,16] [--size WxH] [--frames N] [--reference-spp N] [--cache DIR] [--out DIR] "
+            "[--shard i/n] [--check-auto E [--calibration-size WxH] [--calibration-frames N] "
+            "[--calibration-spp N]] "
             "[--no-default-light] [--sky FILE.exr [--sky-intensity K]]",
         .description =
             "For each scene, renders a path-traced reference with AOVs (or reuses the one cached for the "
@@ -333,8 +381,11 @@ Command benchCommand() {
             "frame time on log-log axes (python3-matplotlib). lumen and ddgi are not in the default list: on "
             "lavapipe they cost seconds a frame until the surface cache converges; name them with "
             "--techniques. "
-            "docs/measurement.md has the columns.",
-        .flags = withSceneLoadFlags(
+            "docs/measurement.md has the columns. With --shard i/n it runs only units i, i+n, i+2n... of "
+            "the matrix (a unit: one scene and one real-time technique at every preset; the path tracer's "
+            "budgets go with the technique they multiply) and writes their rows with DIR/shard.json and no "
+            "plot; `lumina merge OUT DIR...` makes one run's files from the n shards (docs/batch.md).",
+        .flags = withCalibrationFlags(withSceneLoadFlags(
             {{"scenes", "LIST",
               "comma-separated scenes (default cornell_box,cornell_box_point,open_top_box)"},
              {"techniques", "LIST", "direct, lumen, ddgi, sh-grid, pathtracer (default direct,pathtracer)"},
@@ -344,10 +395,16 @@ Command benchCommand() {
              {"reference-spp", "N", "samples per pixel of the references (default 256)"},
              {"cache", "DIR", "where references are kept (default $LUMINA_CACHE_DIR/references)"},
              {"no-plot", "", "write the CSV and JSON only"},
+             shardFlag("run units i, i+n, ... of the n-way split matrix only (0 <= i < n), for lumina merge"),
+             {"check-auto", "E",
+              "after the matrix, compare what render --technique auto --error-budget E chooses per scene "
+              "(its "
+              "calibration, --calibration-*) with the matrix's cheapest configuration under E "
+              "(DIR/auto_check.csv); not with --shard"},
              {"change-frames", "N",
               "for animated scenes: play N frames of the animation, hold the pose, and measure the frames "
               "and GPU ms until each real-time run is within relMSE 0.01 of a fresh converged render of that "
-              "pose, and the frame cost moving against static (DIR/change_response.csv)"}}),
+              "pose, and the frame cost moving against static (DIR/change_response.csv)"}})),
         .run = runBench};
 }
 

@@ -22,6 +22,10 @@
 
 #include "app/command.h"
 #include "app/commands/scene_options.h"
+#include "app/commands/shard_option.h"
+#include "gi/bench/reference_cache.h"
+#include "gi/bench/reference_shards.h"
+#include "gi/core/build_info.h"
 #include "gi/core/frame_context.h"
 #include "gi/core/pipeline_cache.h"
 #include "gi/image/exr.h"
@@ -120,13 +124,37 @@ int runReference(const ParsedArgs& args) {
     settings.aovs = args.has("aovs");
     settings.jitter = !args.has("pixel-centres");
 
+    const std::optional<gi::Shard> shard = parseShardFlag(args);
+    if (shard && hasTarget) {
+        throw UsageError(
+            "--shard with --target-error: the shards would stop at different sample counts; give "
+            "--spp");
+    }
+    if (shard && args.has("png")) {
+        throw UsageError(
+            "--shard with --png: a shard holds some rows only; lumina merge --png makes the preview");
+    }
+
     const std::string& name = args.positional.front();
     scene::Scene loaded = scene::loadScene(name, sceneLoadOptions(args));
     if (args.common.size) {
         settings.width = args.common.size->width;
         settings.height = args.common.size->height;
     }
-    const std::string out = args.common.out.empty() ? loaded.name + "_reference.exr" : args.common.out;
+    if (shard) {
+        const uint32_t height = settings.height ? settings.height : loaded.image.height;
+        try {
+            const gi::RowBand rows = gi::shardRows(height, *shard);
+            settings.firstRow = rows.first;
+            settings.rowCount = rows.count;
+        } catch (const std::invalid_argument& e) {
+            throw UsageError("--shard " + shard->text() + ": " + e.what());
+        }
+    }
+    const std::string out = !args.common.out.empty() ? args.common.out
+                            : shard ? loaded.name + "_reference_shard" + std::to_string(shard->index) + "of" +
+                                          std::to_string(shard->count) + ".exr"
+                                    : loaded.name + "_reference.exr";
     // Fail before rendering, not after.
     for (const std::string& path : {out, args.get("png")}) {
         if (path.empty()) {
@@ -147,6 +175,11 @@ int runReference(const ParsedArgs& args) {
     const gi::PathTracerSceneStats& stats = traced.stats();
     gi::PathTracer tracer(*device, traced, loaded, settings);
     const uint32_t width = tracer.settings().width, height = tracer.settings().height;
+    const uint32_t tracedRows = tracer.rowCount();
+    if (shard) {
+        std::cerr << "shard " << shard->text() << ": rows " << settings.firstRow << " to "
+                  << settings.firstRow + tracedRows - 1 << " of " << height << "\n";
+    }
     std::cerr << "scene: " << loaded.name << ", " << stats.triangles << " triangles, " << stats.emitters
               << " emissive, " << stats.lights << " punctual lights; BVH " << stats.bvhNodes
               << " nodes, depth " << stats.bvhDepth << ", built in " << formatDuration(stats.buildSeconds)
@@ -218,10 +251,24 @@ int runReference(const ParsedArgs& args) {
 
     const gi::PathTracerResult result = tracer.readResult();
     image::writeExr(out, result.image);
+    if (shard) {
+        gi::writeReferenceShardInfo(out, {.scene = loaded.name,
+                                          .sceneDigest = gi::sceneDigest(loaded),
+                                          .width = width,
+                                          .height = height,
+                                          .spp = result.samples,
+                                          .seed = settings.seed,
+                                          .maxBounces = settings.maxBounces,
+                                          .aovs = settings.aovs,
+                                          .jitter = settings.jitter,
+                                          .commit = std::string(gi::gitCommit()),
+                                          .shard = *shard,
+                                          .rows = {.first = settings.firstRow, .count = tracedRows}});
+    }
     if (args.has("png")) {
         image::writePng(args.get("png"), result.image);
     }
-    const double pixels = double(width) * double(height);
+    const double pixels = double(width) * double(tracedRows);
     const double samples = double(result.samples) * pixels;
     const double raysPerSample = double(result.rays) / samples;
     // Steady state: without the first submission when there were others.
@@ -238,7 +285,8 @@ int runReference(const ParsedArgs& args) {
         std::printf("warning: %llu non-finite samples were replaced by 0\n",
                     static_cast<unsigned long long>(result.nonFiniteSamples));
     }
-    std::printf("wrote %s%s%s\n", out.c_str(), args.has("png") ? " and " : "", args.get("png").c_str());
+    std::printf("wrote %s%s%s\n", out.c_str(), args.has("png") ? " and " : "",
+                shard ? (" and " + gi::shardInfoPath(out).string()).c_str() : args.get("png").c_str());
     if (device->validationMessageCount() != 0) {
         std::cerr << "reference: " << device->validationMessageCount() << " validation message(s)\n";
         return 1;
@@ -252,9 +300,10 @@ Command referenceCommand() {
     return {
         .name = "reference",
         .summary = "path-trace the ground-truth image of a scene (EXR with variance and AOVs)",
-        .usage = "lumina reference SCENE [--spp N] [--target-error E] [--out ref.exr] [--size WxH] [--aovs] "
-                 "[--max-bounces N] [--seed N] [--png PATH] [--no-default-light] [--sky FILE.exr "
-                 "[--sky-intensity K]]",
+        .usage =
+            "lumina reference SCENE [--spp N] [--target-error E] [--out ref.exr] [--size WxH] [--aovs] "
+            "[--max-bounces N] [--seed N] [--png PATH] [--shard i/n] [--no-default-light] [--sky FILE.exr "
+            "[--sky-intensity K]]",
         .description =
             "Renders SCENE (a built-in name or a scene/glTF path) with the reference path tracer on the GPU: "
             "the same camera, pixel footprint, units and lights as the real-time renderer "
@@ -263,7 +312,11 @@ Command referenceCommand() {
             "(linear radiance, float) and variance.R/G/B (the variance of each pixel's mean); --aovs adds "
             "albedo.*, normal.X/Y/Z, direct.* (at most one bounce) and indirect.* (two or more). At the end "
             "it "
-            "prints samples/s and rays/s. The same seed gives the same image.",
+            "prints samples/s and rays/s. The same seed gives the same image. With --shard i/n it traces "
+            "band i of n equal bands of rows (0-based) and writes only those rows, with OUT.shard.json "
+            "beside the EXR saying which run and rows they are; a pixel's random numbers depend on its "
+            "place in the whole image, so `lumina merge` stitches the n shards into exactly the file one "
+            "run writes (docs/batch.md).",
         .flags = withSceneLoadFlags(
             {{"spp", "N", "samples per pixel (default 256; the cap with --target-error: 65536)"},
              {"target-error", "E",
@@ -271,7 +324,9 @@ Command referenceCommand() {
              {"aovs", "", "also write albedo, normal, direct and indirect channels"},
              {"max-bounces", "N", "scattering events per path (default 1024; roulette ends most paths)"},
              {"pixel-centres", "", "sample pixel centres only (no antialiasing), like a rasteriser"},
-             {"png", "PATH", "also write a tonemapped PNG preview"}}),
+             {"png", "PATH", "also write a tonemapped PNG preview"},
+             shardFlag("trace band i of n bands of rows only (0 <= i < n; not with --target-error or "
+                       "--png; default OUT: SCENE_reference_shardIofN.exr)")}),
         .run = runReference};
 }
 

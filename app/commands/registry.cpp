@@ -10,11 +10,12 @@ Command infoCommand();
 Command sdfCommand();
 Command referenceCommand();
 Command renderCommand();
+Command mergeCommand();
 
 const std::vector<Command>& allCommands() {
     static const std::vector<Command> commands = {
         gpuCheckCommand(), benchCommand(),     compareCommand(), infoCommand(),
-        sdfCommand(),      referenceCommand(), renderCommand(),
+        sdfCommand(),      referenceCommand(), renderCommand(),  mergeCommand(),
     };
     return commands;
 }

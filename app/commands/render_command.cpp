@@ -3,6 +3,7 @@
 // composite) rendered on the GPU and written as a PNG, optionally with the linear HDR result as
 // EXR, every intermediate buffer, and the GPU time of each pass.
 #include "app/command.h"
+#include "app/commands/auto_technique_option.h"
 #include "app/commands/ddgi_options.h"
 #include "app/commands/scene_options.h"
 #include "app/commands/sh_grid_options.h"
@@ -112,11 +113,7 @@ void printMemory(const gi::FrameRenderer& renderer, uint64_t sceneBytes, uint64_
               << '\n';
 }
 
-int runRender(const ParsedArgs& args) {
-    if (args.positional.size() != 1) {
-        throw UsageError("render takes one scene: a built-in name or a .json, .gltf or .glb path (see lumina "
-                         "render --help)");
-    }
+int renderWith(const ParsedArgs& args) {
     const bool timings = args.has("timings") || args.has("timings-json");
     if (args.common.frames && *args.common.frames == 0) {
         throw UsageError("--frames: at least one frame");
@@ -384,6 +381,23 @@ int runRender(const ParsedArgs& args) {
     return 0;
 }
 
+int runRender(const ParsedArgs& args) {
+    if (args.positional.size() != 1) {
+        throw UsageError("render takes one scene: a built-in name or a .json, .gltf or .glb path (see lumina "
+                         "render --help)");
+    }
+    if (args.get("technique") == "auto") {
+        return renderWith(chooseAutoTechnique(args));
+    }
+    for (const char* flag : {"error-budget", "auto-techniques", "auto-presets", "calibration-size",
+                             "calibration-frames", "calibration-spp"}) {
+        if (args.has(flag)) {
+            throw UsageError(std::string("--") + flag + " goes with --technique auto");
+        }
+    }
+    return renderWith(args);
+}
+
 } // namespace
 
 Command renderCommand() {
@@ -391,7 +405,7 @@ Command renderCommand() {
         .name = "render",
         .summary = "render a scene in real time: deferred direct light plus GI (lumen)",
         .usage = "lumina render SCENE [--technique direct|lumen|ddgi|sh-grid] [--preset low|medium|high] "
-                 "[--out img.png] "
+                 "[--technique auto --error-budget E] [--out img.png] "
                  "[--exr img.exr] [--dump-buffers DIR] [--timings] [--timings-json PATH] [--frames N] "
                  "[--warmup N] [--frames-in-flight N] [--exposure EV] [--size WxH] [--no-default-light] "
                  "[--sky FILE.exr "
@@ -414,10 +428,19 @@ Command renderCommand() {
             "something they read changed). A scene with an animation (glTF channels or scripted changes, "
             "docs/scenes.md) plays it, one loop unless --frames, and only what each frame changed is "
             "recomputed (docs/dynamic_scenes.md); --animation-frame F renders the pose at frame F "
-            "still, converged like a static scene.",
-        .flags = withSceneLoadFlags(withShGridFlags(withDdgiFlags(
+            "still, converged like a static scene. --technique auto --error-budget E picks the technique "
+            "and preset: a calibration renders every candidate (--auto-techniques x --auto-presets) at "
+            "--calibration-size for --calibration-frames frames, times each on the GPU and measures its "
+            "relMSE against a --calibration-spp path-traced reference of that size; the cheapest "
+            "candidate (median GPU ms per frame) with relMSE <= E renders, after the table of candidates "
+            "and the reason for the choice are printed. The table is cached under "
+            "$LUMINA_CACHE_DIR/calibration, keyed by the scene's contents, the calibration and the build; "
+            "no candidate under E is an error (exit 1) naming the most accurate one "
+            "(docs/measurement.md).",
+        .flags = withAutoTechniqueFlags(withSceneLoadFlags(withShGridFlags(withDdgiFlags(
             {{"technique", "NAME",
-              "GI technique: direct (none), lumen, ddgi or sh-grid (default: the scene's, else lumen)"},
+              "GI technique: direct (none), lumen, ddgi, sh-grid, or auto (with --error-budget; default: "
+              "the scene's, else lumen)"},
              {"preset", "NAME", "quality preset: low, medium or high (default: the scene's, else medium)"},
              {"probe-spacing", "N", "pixels per screen-probe edge (overrides the preset; 2..64)"},
              {"rays-per-probe", "N", "rays per screen probe (overrides the preset; 16..256)"},
@@ -434,7 +457,7 @@ Command renderCommand() {
              {"exposure", "EV", "exposure in stops before the tonemap (default 0)"},
              {"animation-frame", "F",
               "pose an animated scene at frame F and hold it still (default: play the animation, one loop "
-              "unless --frames)"}}))),
+              "unless --frames)"}})))),
         .run = runRender};
 }
 

@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <random>
+#include <string>
 #include <system_error>
 
 namespace lumina::gi {
@@ -155,8 +157,10 @@ Reference loadOrRenderReference(rhi::IDevice& device, PipelineCache& pipelines, 
     }
     reference.image = result.image;
     std::filesystem::create_directories(directory);
-    // Written under a temporary name and renamed, so an interrupted run leaves no torn file.
-    const std::filesystem::path partial = reference.path.string() + ".partial";
+    // Written under a temporary name and renamed, so an interrupted run leaves no torn file;
+    // the name is this process's own, so bench shards sharing a cache never write one file.
+    const std::filesystem::path partial =
+        reference.path.string() + ".partial" + std::to_string(std::random_device{}());
     image::writeExr(partial, reference.image);
     std::filesystem::rename(partial, reference.path);
     reference.seconds = std::chrono::duration<double>(Clock::now() - start).count();

@@ -51,6 +51,14 @@ PathTracer::PathTracer(rhi::IDevice& device, const PathTracerScene& traced, cons
         throw rhi::Error("path tracer: image size " + std::to_string(settings_.width) + "x" +
                          std::to_string(settings_.height) + " is empty or too large");
     }
+    if (settings_.rowCount == 0 && settings_.firstRow < settings_.height) {
+        settings_.rowCount = settings_.height - settings_.firstRow;
+    }
+    if (settings_.rowCount == 0 || uint64_t(settings_.firstRow) + settings_.rowCount > settings_.height) {
+        throw rhi::Error("path tracer: rows " + std::to_string(settings_.firstRow) + " + " +
+                         std::to_string(settings_.rowCount) + " outside the image's " +
+                         std::to_string(settings_.height) + " rows");
+    }
     gpu::PathTraceConstants constants{};
     constants.camera = makeGpuCamera(scene.camera, settings_.width, settings_.height);
     const uint32_t flags =
@@ -78,13 +86,15 @@ PathTracer::PathTracer(rhi::IDevice& device, const PathTracerScene& traced, cons
 
 void PathTracer::recordSamples(FrameContext& frame, uint32_t count) {
     const uint32_t width = settings_.width;
-    const uint32_t height = settings_.height;
+    const uint32_t endRow = settings_.firstRow + settings_.rowCount;
     // Bands of whole rows, a multiple of the group height, of at most maxPixelsPerDispatch.
     uint32_t bandRows = std::max(settings_.maxPixelsPerDispatch / width, 1u);
     bandRows = std::max(bandRows / kGroupSize * kGroupSize, kGroupSize);
     const GpuScene& scene = traced_.gpuScene();
     for (uint32_t s = 0; s < count; ++s) {
-        for (uint32_t y = 0; y < height; y += bandRows) {
+        // A band's last group may run past endRow into rows another shard owns: those pixels
+        // land in this tracer's buffers only, and readResult never returns them.
+        for (uint32_t y = settings_.firstRow; y < endRow; y += bandRows) {
             frame.compute("path tracer: sample", "pathtracer/path_trace")
                 .constantBuffer(0, constants_)
                 .read(0, traced_.bvhNodes)
@@ -105,22 +115,30 @@ void PathTracer::recordSamples(FrameContext& frame, uint32_t count) {
                 .write(2, counts_)
                 .write(3, aovs_)
                 .constants(gpu::PathTracePassConstants{samples_, 0u, y, 0u})
-                .dispatchThreads(width, std::min(bandRows, height - y), {kGroupSize, kGroupSize});
+                .dispatchThreads(width, std::min(bandRows, endRow - y), {kGroupSize, kGroupSize});
         }
         ++samples_;
     }
 }
 
+template <typename T>
+std::span<const T> PathTracer::tracedRows(const std::vector<T>& pixels) const {
+    const size_t first = size_t(settings_.firstRow) * settings_.width;
+    return std::span<const T>(pixels).subspan(first, size_t(settings_.rowCount) * settings_.width);
+}
+
 double PathTracer::meanRelativeStandardError() const {
     const auto mean = rhi::readBufferAs<gpu::float4>(device_, *mean_);
     const auto m2 = rhi::readBufferAs<gpu::float4>(device_, *m2_);
-    return relativeStandardError(mean, m2, samples_);
+    return relativeStandardError(tracedRows(mean), tracedRows(m2), samples_);
 }
 
 PathTracerResult PathTracer::readResult() const {
-    const auto mean = rhi::readBufferAs<gpu::float4>(device_, *mean_);
-    const auto m2 = rhi::readBufferAs<gpu::float4>(device_, *m2_);
-    const auto counts = rhi::readBufferAs<gpu::uint2>(device_, *counts_);
+    const auto meanBuffer = rhi::readBufferAs<gpu::float4>(device_, *mean_);
+    const auto m2Buffer = rhi::readBufferAs<gpu::float4>(device_, *m2_);
+    const auto countsBuffer = rhi::readBufferAs<gpu::uint2>(device_, *counts_);
+    const std::span<const gpu::float4> mean = tracedRows(meanBuffer), m2 = tracedRows(m2Buffer);
+    const std::span<const gpu::uint2> counts = tracedRows(countsBuffer);
 
     PathTracerResult result;
     result.samples = samples_;
@@ -135,7 +153,7 @@ PathTracerResult PathTracer::readResult() const {
             names.push_back(c);
         }
     }
-    result.image = image::Image(settings_.width, settings_.height, names);
+    result.image = image::Image(settings_.width, settings_.rowCount, names);
     const double n = samples_;
     const double varianceScale = samples_ > 1 ? 1.0 / (n * (n - 1.0)) : 0.0;
     auto plane = [&](const char* name) { return result.image.channel(name); };
@@ -152,7 +170,8 @@ PathTracerResult PathTracer::readResult() const {
         result.nonFiniteSamples += counts[i].y;
     }
     if (settings_.aovs) {
-        const auto aovs = rhi::readBufferAs<gpu::PtPixelAovs>(device_, *aovs_);
+        const auto aovBuffer = rhi::readBufferAs<gpu::PtPixelAovs>(device_, *aovs_);
+        const std::span<const gpu::PtPixelAovs> aovs = tracedRows(aovBuffer);
         auto copy3 = [&](const char* x, const char* y, const char* z, gpu::float4 gpu::PtPixelAovs::*member) {
             std::span<float> px = plane(x), py = plane(y), pz = plane(z);
             for (size_t i = 0; i < aovs.size() && i < px.size(); ++i) {

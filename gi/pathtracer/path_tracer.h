@@ -19,6 +19,7 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 namespace lumina::gi {
 
@@ -33,6 +34,12 @@ struct PathTracerSettings {
     uint32_t seed = 1;
     bool jitter = true; // sample the whole pixel footprint; false: the pixel centre only
     bool aovs = false;
+    // Rows [firstRow, firstRow + rowCount) only (rowCount 0: every row), for a shard of a
+    // reference (`lumina reference --shard`). A pixel's random numbers depend on its place in
+    // the whole image, never on the rows traced, so the shards of an image stitch into exactly
+    // the image one run makes; the result holds these rows only.
+    uint32_t firstRow = 0;
+    uint32_t rowCount = 0;
     uint32_t maxPixelsPerDispatch = 1u << 18; // tiles of at most this many pixels (512 x 512)
 };
 
@@ -61,6 +68,8 @@ public:
     void restart() { samples_ = 0; }
     uint32_t samples() const { return samples_; }
     uint64_t pixelCount() const { return uint64_t(settings_.width) * settings_.height; }
+    // The rows traced: settings().firstRow onwards, this many.
+    uint32_t rowCount() const { return settings_.rowCount; }
     const PathTracerSettings& settings() const { return settings_; }
 
     // Reads the accumulation back (blocking; the recorded work must have been submitted).
@@ -69,6 +78,10 @@ public:
     double meanRelativeStandardError() const;
 
 private:
+    // The traced rows of a whole-image buffer read back.
+    template <typename T>
+    std::span<const T> tracedRows(const std::vector<T>& pixels) const;
+
     rhi::IDevice& device_;
     const PathTracerScene& traced_;
     PathTracerSettings settings_;

@@ -48,6 +48,31 @@ TEST_P(DeterminismTest, SameSeedSameImageWhateverTheSplit) {
     EXPECT_EQ(whole.nonFiniteSamples, 0u);
 }
 
+// A band of rows (a shard of `lumina reference --shard`) is exactly those rows of the whole
+// image, so the bands of an image stitch into it bit for bit; a band that ends off the
+// 8-row group grid (rows 5..17) is the case where the last group runs past the band.
+TEST_P(DeterminismTest, ABandOfRowsIsThoseRowsOfTheWholeImage) {
+    const scene::Scene scene = loadBuiltin("cornell_box", kSize, kSize);
+    gi::PathTracerSettings settings;
+    settings.aovs = true;
+    const gi::PathTracerResult whole = render(scene, settings, kSpp, kSpp);
+
+    gi::PathTracerSettings band = settings;
+    band.firstRow = 5;
+    band.rowCount = 13;
+    const gi::PathTracerResult part = render(scene, band, kSpp, kSpp);
+    ASSERT_EQ(part.image.width(), kSize);
+    ASSERT_EQ(part.image.height(), band.rowCount);
+    ASSERT_EQ(part.image.channelNames(), whole.image.channelNames());
+    for (const std::string& name : whole.image.channelNames()) {
+        const auto rows =
+            whole.image.channel(name).subspan(size_t(band.firstRow) * kSize, part.image.pixelCount());
+        EXPECT_EQ(std::memcmp(rows.data(), part.image.channel(name).data(), rows.size_bytes()), 0)
+            << "channel " << name << " of rows 5..17 differs from the whole image's";
+    }
+    EXPECT_LT(part.rays, whole.rays);
+}
+
 LUMINA_INSTANTIATE_GPU_TEST(DeterminismTest);
 
 } // namespace
