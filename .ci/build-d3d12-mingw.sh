@@ -256,9 +256,9 @@ check_frame direct 1e-6 strict cornell_box_point --technique direct --size 64x64
 # radiosity, and the 12 screen-probe passes, 4 frames. The APIs' float rounding differs by an ULP
 # here and there (DXBC from vkd3d-shader against SPIR-V from glslang), and the screen probes'
 # importance sampling feeds each frame's radiance into the next frame's ray directions, so the
-# frames drift apart slowly: relMSE 7e-6 after 3 and 8e-6 after 4 frames, 3e-4 after 8
-# (docs/d3d12.md). A miscompiled kernel shows far above the bound (a black far field gave 0.0155).
-check_frame lumen 1e-4 vkd3d cornell_box --technique lumen --preset low --size 32x32 --frames 4
+# frames could drift apart: measured relMSE 3.5e-10 after 4 frames (docs/d3d12.md). The bound was
+# 1e-4 while the texel solid angles were miscompiled (8e-6 then); a black far field gave 0.0155.
+check_frame lumen 1e-6 vkd3d cornell_box --technique lumen --preset low --size 32x32 --frames 4
 
 # The DDGI frame: probe tracing through the SDFs into the surface cache, the irradiance and
 # distance blends, relocation, classification and sampling, 4 frames. No importance sampling
