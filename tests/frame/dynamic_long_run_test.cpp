@@ -20,6 +20,7 @@
 #include "gi/scene/scene_loader.h"
 #include "tests/frame/frame_harness.h"
 #include "tests/frame/probe_health.h"
+#include "tests/frame/step_stats.h"
 #include "tests/rhi/gpu_test_fixture.h"
 
 #include <algorithm>
@@ -116,8 +117,7 @@ TEST_P(DynamicLongRun, SunAndColumnStayFiniteBoundedAndSteady) {
     scene::Scene posed = scene;
 
     image::Image previousIndirect;
-    double maxIndirectStep = 0.0, sumIndirectStep = 0.0;
-    uint32_t maxStepFrame = 0, steps = 0;
+    StepStats indirectSteps;
     std::vector<double> loopCpuMs;
     std::vector<LoopFigures> loops;
     // Frames recorded here rather than by h.render(), so that each loop gets its own per-pass
@@ -147,13 +147,7 @@ TEST_P(DynamicLongRun, SunAndColumnStayFiniteBoundedAndSteady) {
             image::Image indirect = h.indirect();
             ASSERT_EQ(measure::countNonFinite(indirect).total(), 0u) << "frame " << f;
             if (stepEnds && f >= kSettle && !previousIndirect.channelNames().empty()) {
-                const double step = measure::relMse(previousIndirect, indirect);
-                sumIndirectStep += step;
-                ++steps;
-                if (step > maxIndirectStep) {
-                    maxIndirectStep = step;
-                    maxStepFrame = f;
-                }
+                indirectSteps.add(measure::relMse(previousIndirect, indirect), f);
             }
             previousIndirect = stepStarts ? std::move(indirect) : image::Image();
         }
@@ -176,8 +170,7 @@ TEST_P(DynamicLongRun, SunAndColumnStayFiniteBoundedAndSteady) {
                 "loop %zu (frames %u-%u): GPU %.3f ms, CPU %.3f ms a frame (medians), GPU memory %.1f MiB, "
                 "indirect step so far mean %.3g max %.3g\n",
                 loops.size(), f + 1 - kLoopFrames, f, l.medianGpuMs, l.medianCpuMs,
-                double(l.memoryBytes) / (1024.0 * 1024.0), steps ? sumIndirectStep / steps : 0.0,
-                maxIndirectStep);
+                double(l.memoryBytes) / (1024.0 * 1024.0), indirectSteps.mean(), indirectSteps.max);
             std::fflush(stdout);
         }
     }
@@ -203,12 +196,12 @@ TEST_P(DynamicLongRun, SunAndColumnStayFiniteBoundedAndSteady) {
         "(frame %u); %zu loops, the lowest loop median over the first and the last %zu: GPU %.3f -> %.3f ms, "
         "CPU %.3f -> %.3f ms; memory after loop 2 and at the end %.1f -> %.1f MiB\n",
         frames, kSize, kSize, std::string(rhi::apiName(GetParam())).c_str(),
-        longRunValidation() ? "on" : "off", steps, steps ? sumIndirectStep / steps : 0.0, maxIndirectStep,
-        maxStepFrame, loops.size(), quarter, earlyGpu, lateGpu, earlyCpu, lateCpu,
+        longRunValidation() ? "on" : "off", indirectSteps.count, indirectSteps.mean(), indirectSteps.max,
+        indirectSteps.maxFrame, loops.size(), quarter, earlyGpu, lateGpu, earlyCpu, lateCpu,
         double(second.memoryBytes) / (1024.0 * 1024.0), double(last.memoryBytes) / (1024.0 * 1024.0));
     std::printf("passes that changed from loop 2 to loop %zu:\n", loops.size());
     printPassChanges(second, last);
-    EXPECT_LT(maxIndirectStep, kMaxIndirectStepRelMse) << "frame " << maxStepFrame;
+    EXPECT_LT(indirectSteps.max, kMaxIndirectStepRelMse) << "frame " << indirectSteps.maxFrame;
     EXPECT_LE(last.memoryBytes, second.memoryBytes) << "GPU memory grew";
     EXPECT_LE(lateGpu, earlyGpu * kMaxFrameTimeGrowth) << "GPU frame time grew";
     EXPECT_LE(lateCpu, earlyCpu * kMaxCpuTimeGrowth) << "CPU frame time grew";

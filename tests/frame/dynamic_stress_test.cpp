@@ -8,6 +8,7 @@
 #include "gi/scene/scene_loader.h"
 #include "tests/frame/frame_harness.h"
 #include "tests/frame/probe_health.h"
+#include "tests/frame/step_stats.h"
 #include "tests/rhi/gpu_test_fixture.h"
 
 #include <algorithm>
@@ -32,23 +33,6 @@ constexpr uint32_t kDynamicSize = 64;
 constexpr uint32_t kDynamicFrames = 1000;
 constexpr uint32_t kDynamicSettle = 60;         // the first frames build up from black
 constexpr double kMaxIndirectStepRelMse = 0.02; // measured on the H200: mean 0.0014, max 0.0052
-
-struct StepStats {
-    double sum = 0.0;
-    double max = 0.0;
-    uint32_t count = 0;
-    uint32_t maxFrame = 0;
-
-    void add(double step, uint32_t frame) {
-        sum += step;
-        ++count;
-        if (step > max) {
-            max = step;
-            maxFrame = frame;
-        }
-    }
-    double mean() const { return count ? sum / count : 0.0; }
-};
 
 TEST_P(DynamicStress, AtriumDaySunSweepStaysFiniteWithBoundedChangeFor1000Frames) {
     LUMINA_REQUIRE_KERNELS();
