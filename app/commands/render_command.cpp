@@ -227,23 +227,86 @@ int renderWith(const ParsedArgs& args) {
     // uploads live in each list's own upload memory, and every list starts with a full barrier
     // (rhi/command_list.h), so frames that overlap on the CPU stay in order on the GPU.
     const auto inFlight = static_cast<uint32_t>(args.getUint("frames-in-flight", 2, 1, kMaxFramesInFlight));
+    // Async compute (docs/performance.md, change 3): each frame is recorded into three lists, and
+    // the GI passes that read nothing of the frame's raster run on the compute queue beside it.
+    const bool asyncCompute = args.has("async-compute");
     struct InFlightFrame {
-        rhi::CommandListHandle list;
+        rhi::CommandListHandle list;   // the whole frame; with async compute, its raster
+        rhi::CommandListHandle async;  // with async compute: the compute queue's list
+        rhi::CommandListHandle gather; // with async compute: the GI after the raster, the composite
         std::vector<gi::SkippedPass> skipped;
-        uint64_t fence = 0; // the queue value its submission signals; 0: none pending
+        uint64_t fence = 0;      // the graphics queue value its last submission signals; 0: none pending
+        uint64_t asyncFence = 0; // the compute queue's; 0: none pending
     };
     std::vector<InFlightFrame> slots(inFlight);
     for (InFlightFrame& slot : slots) {
         slot.list = device->createCommandList();
+        if (asyncCompute) {
+            slot.async = device->createCommandList(rhi::QueueType::Compute);
+            slot.gather = device->createCommandList();
+        }
     }
     rhi::IQueue& queue = device->queue(rhi::QueueType::Graphics);
+    rhi::IQueue& computeQueue = device->queue(rhi::QueueType::Compute);
     // A slot's previous frame, once finished: its timers into the table.
     const auto retire = [&](InFlightFrame& slot) {
+        if (slot.asyncFence != 0) {
+            computeQueue.waitForValue(slot.asyncFence);
+        }
         if (slot.fence != 0) {
             queue.waitForValue(slot.fence);
-            table.addFrame(slot.list->timerResults(), slot.skipped);
+            std::vector<rhi::TimerResult> timers = slot.list->timerResults();
+            // The async list counts only when it was submitted (it holds no passes otherwise).
+            for (rhi::ICommandList* more :
+                 {slot.asyncFence != 0 ? slot.async.get() : nullptr, slot.gather.get()}) {
+                if (more != nullptr) {
+                    std::vector<rhi::TimerResult> results = more->timerResults();
+                    timers.insert(timers.end(), results.begin(), results.end());
+                }
+            }
+            table.addFrame(timers, slot.skipped);
             slot.fence = 0;
+            slot.asyncFence = 0;
         }
+    };
+    uint64_t lastGraphicsFence = 0;
+    uint32_t asyncFrames = 0; // frames whose GI ran partly on the compute queue
+    // Records frame `frameIndex` into `slot` and submits it; returns its skipped passes.
+    const auto recordAndSubmit = [&](InFlightFrame& slot, uint32_t frameIndex) {
+        slot.list->begin();
+        gi::FrameContext frame(pipelines, *slot.list, frameIndex);
+        if (!asyncCompute) {
+            renderer.render(frame);
+            slot.list->end();
+            lastGraphicsFence = slot.fence = queue.submit(*slot.list);
+            return frame.skipped();
+        }
+        slot.async->begin();
+        slot.gather->begin();
+        gi::FrameContext async(pipelines, *slot.async, frameIndex);
+        gi::FrameContext gather(pipelines, *slot.gather, frameIndex);
+        const bool besideRaster = renderer.render(gi::SplitFrame{frame, async, gather});
+        slot.list->end();
+        slot.async->end();
+        slot.gather->end();
+        if (besideRaster) {
+            // The async passes rewrite what the previous frame's gather read: they start after it.
+            if (lastGraphicsFence != 0) {
+                computeQueue.waitForQueue(queue, lastGraphicsFence);
+            }
+            slot.asyncFence = computeQueue.submit(*slot.async);
+            ++asyncFrames;
+        }
+        queue.submit(*slot.list);
+        if (besideRaster) {
+            queue.waitForQueue(computeQueue, slot.asyncFence);
+        }
+        lastGraphicsFence = slot.fence = queue.submit(*slot.gather);
+        std::vector<gi::SkippedPass> skipped = frame.skipped();
+        for (const gi::FrameContext* part : {&async, &gather}) {
+            skipped.insert(skipped.end(), part->skipped().begin(), part->skipped().end());
+        }
+        return skipped;
     };
     std::vector<double> wallMs;
     auto lastFrameEnd = std::chrono::steady_clock::now();
@@ -259,18 +322,13 @@ int renderWith(const ParsedArgs& args) {
         }
         InFlightFrame& slot = slots[frameIndex % inFlight];
         retire(slot);
-        slot.list->begin();
-        gi::FrameContext frame(pipelines, *slot.list, frameIndex);
-        renderer.render(frame);
+        slot.skipped = recordAndSubmit(slot, frameIndex);
         if (renderer.lastChanges().any()) {
             ++changedFrames;
             changes.movedInstances += renderer.lastChanges().movedInstances;
             changes.changedLights += renderer.lastChanges().changedLights;
             changes.changedMaterials += renderer.lastChanges().changedMaterials;
         }
-        slot.list->end();
-        slot.fence = queue.submit(*slot.list);
-        slot.skipped = frame.skipped();
         const auto now = std::chrono::steady_clock::now();
         if (frameIndex >= warmup) {
             wallMs.push_back(std::chrono::duration<double, std::milli>(now - lastFrameEnd).count());
@@ -299,6 +357,14 @@ int renderWith(const ParsedArgs& args) {
         std::cout << "wall time: " << std::fixed << std::setprecision(3) << gi::median(wallMs)
                   << " ms a frame (median from frame " << warmup << ", CPU recording and submission with "
                   << inFlight << " frame(s) in flight)" << std::defaultfloat << '\n';
+    }
+    if (asyncCompute) {
+        std::cout << "async compute: " << asyncFrames << " of " << rendered
+                  << " frame(s) ran GI passes on the compute queue ("
+                  << (device->capabilities().separateComputeQueue ? "a separate hardware queue"
+                                                                  : "this device's compute queue shares the "
+                                                                    "graphics hardware queue")
+                  << "); the frame row of the timings sums passes that overlapped, the wall time does not\n";
     }
     if (animated) {
         std::cout << "animation: " << rendered << " frame(s) played (a loop is " << loopFrames << " at "
@@ -407,7 +473,8 @@ Command renderCommand() {
         .usage = "lumina render SCENE [--technique direct|lumen|ddgi|sh-grid] [--preset low|medium|high] "
                  "[--technique auto --error-budget E] [--out img.png] "
                  "[--exr img.exr] [--dump-buffers DIR] [--timings] [--timings-json PATH] [--frames N] "
-                 "[--warmup N] [--frames-in-flight N] [--exposure EV] [--size WxH] [--no-default-light] "
+                 "[--warmup N] [--frames-in-flight N] [--async-compute] [--exposure EV] [--size WxH] "
+                 "[--no-default-light] "
                  "[--sky FILE.exr "
                  "[--sky-intensity K]]",
         .description =
@@ -454,6 +521,10 @@ Command renderCommand() {
              {"warmup", "N", "frames left out of the timings (default 0)"},
              {"frames-in-flight", "N",
               "frames recorded ahead of the GPU, 1..3 (default 2; 1 waits for each frame before the next)"},
+             {"async-compute", "",
+              "run the GI passes that read nothing of the frame's raster (the surface cache's and DDGI's "
+              "probe updates, when no card is captured or relit) on the compute queue beside the raster "
+              "(docs/performance.md)"},
              {"exposure", "EV", "exposure in stops before the tonemap (default 0)"},
              {"animation-frame", "F",
               "pose an animated scene at frame F and hold it still (default: play the animation, one loop "

@@ -97,7 +97,8 @@ bool DdgiGi::uploadConstants(rhi::ICommandList& commands, const scene::Camera& c
     return anyReset;
 }
 
-void DdgiGi::record(FrameContext& frame, const DeferredRenderer& deferred, const scene::Camera& camera) {
+void DdgiGi::recordProbeUpdate(FrameContext& frame, const DeferredRenderer& deferred,
+                               const scene::Camera& camera) {
     scene_.record(frame, deferred, camera);
     if (uploadConstants(frame.commands(), camera)) {
         reset_.record(frame, resources_);
@@ -109,6 +110,23 @@ void DdgiGi::record(FrameContext& frame, const DeferredRenderer& deferred, const
     blendDistance_.record(frame, resources_);
     relocate_.record(frame, resources_, scene_.sdf());
     classify_.record(frame, resources_);
+}
+
+bool DdgiGi::recordBesideRaster(FrameContext& async, const DeferredRenderer& deferred,
+                                const scene::Camera& camera) {
+    if (!scene_.recordIsComputeOnly(deferred, camera)) {
+        return false;
+    }
+    recordProbeUpdate(async, deferred, camera);
+    probesRecordedBesideRaster_ = true;
+    return true;
+}
+
+void DdgiGi::record(FrameContext& frame, const DeferredRenderer& deferred, const scene::Camera& camera) {
+    if (!probesRecordedBesideRaster_) {
+        recordProbeUpdate(frame, deferred, camera);
+    }
+    probesRecordedBesideRaster_ = false;
     sample_.record(frame, resources_, deferred.gbuffer());
     ++updates_;
 }

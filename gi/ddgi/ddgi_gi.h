@@ -45,6 +45,10 @@ public:
 
     GiTechnique technique() const override { return GiTechnique::Ddgi; }
     void record(FrameContext& frame, const DeferredRenderer& deferred, const scene::Camera& camera) override;
+    // The SDF and surface cache update and the probes' update (everything but the sample pass,
+    // which reads the GBuffer), when the surface cache's update is compute work only this frame.
+    bool recordBesideRaster(FrameContext& async, const DeferredRenderer& deferred,
+                            const scene::Camera& camera) override;
     // Probes hold world-space irradiance, nothing of the view: a camera cut keeps them.
     void resetHistory() override {}
     // The surface cache has converged; the probes follow within a few hundred / (1 - hysteresis)
@@ -74,6 +78,9 @@ private:
     // Places the volumes for this update (cascades follow the camera, scrolling) and uploads the
     // constants; true when some volume's probes are to be reset (all, or the planes scrolled in).
     bool uploadConstants(rhi::ICommandList& commands, const scene::Camera& camera);
+    // The scene's update and the probes' trace, blends, relocation and classification.
+    void recordProbeUpdate(FrameContext& frame, const DeferredRenderer& deferred,
+                           const scene::Camera& camera);
 
     DdgiSettings settings_;
     GiSceneRepresentation scene_;
@@ -85,6 +92,7 @@ private:
     std::vector<glm::uvec3> scrolls_; // per volume: DdgiVolumeInfo::scroll
     std::mt19937 random_;
     uint64_t updates_ = 0;
+    bool probesRecordedBesideRaster_ = false; // this frame's probe update went to the async list
 
     DdgiResetPass reset_;
     DdgiTracePass trace_;

@@ -281,4 +281,18 @@ void FrameRenderer::render(FrameContext& frame) {
     deferred_.recordComposite(frame);
 }
 
+bool FrameRenderer::render(const SplitFrame& frame) {
+    applyPendingChanges(frame.raster);
+    if (!gi_) {
+        deferred_.render(frame.raster);
+        return false;
+    }
+    deferred_.recordLighting(frame.raster);
+    const bool besideRaster = gi_->recordBesideRaster(frame.async, deferred_, camera_);
+    gi_->record(frame.gather, deferred_, camera_);
+    deferred_.setIndirect(gi_->indirect(), gi_->indirectScale());
+    deferred_.recordComposite(frame.gather);
+    return besideRaster;
+}
+
 } // namespace lumina::gi

@@ -49,6 +49,18 @@ struct SceneChangeStats {
     bool any() const { return movedInstances + changedLights + changedMaterials > 0; }
 };
 
+// One frame recorded into three command lists, for async compute (docs/performance.md, change
+// 3). `raster` (graphics queue) holds the scene's uploads and the deferred renderer's raster and
+// lighting; `async` (a compute-queue list) the GI passes that read nothing the raster writes;
+// `gather` (graphics queue) the rest of the GI and the composite. The caller submits `raster`,
+// then `async` on the compute queue (waiting for the previous frame's `gather`, whose reads its
+// writes must not overtake), then `gather` waiting for `async`.
+struct SplitFrame {
+    FrameContext& raster;
+    FrameContext& async;
+    FrameContext& gather;
+};
+
 class FrameRenderer {
 public:
     // `scene` and `gpuScene` must outlive it. The GPU scene's instances and materials follow the
@@ -57,6 +69,11 @@ public:
                   FrameRendererSettings settings);
 
     void render(FrameContext& frame);
+    // The same frame, split for async compute: the same passes with the same results. Returns
+    // true when `frame.async` received passes (submit it, and make `gather` wait for it); false
+    // when this frame's GI needs the graphics queue throughout (a capture, a light change), and
+    // then everything is in `raster` and `gather`.
+    bool render(const SplitFrame& frame);
     void setCamera(const scene::Camera& camera);
     // The next frame's GI keeps no temporal history (screen probes and the screen-space
     // filter), so nothing of the old view is reprojected into the new one; the surface cache is

@@ -15,6 +15,13 @@ void GiSceneRepresentation::record(FrameContext& frame, const DeferredRenderer& 
     cache_.update(frame, deferred.shadowedLights(), camera.position);
 }
 
+bool GiSceneRepresentation::recordIsComputeOnly(const DeferredRenderer& deferred,
+                                                const scene::Camera& camera) {
+    // The SDFs' update is compute and copies only (compose, brick tables).
+    cache_.planLod(camera.position);
+    return cache_.updateIsComputeOnly(deferred.shadowedLights());
+}
+
 void GiSceneRepresentation::moveInstance(uint32_t instance, const glm::mat4& transform,
                                          std::span<const scene::Light> lights) {
     sdf_.setInstanceTransform(instance, transform);

@@ -29,6 +29,10 @@ public:
     // The global SDF's cascades and the cards' LOD follow the camera; the cards are lit by the
     // deferred renderer's shadowed lights (after its recordLighting this frame).
     void record(FrameContext& frame, const DeferredRenderer& deferred, const scene::Camera& camera);
+    // True when this frame's record() would be compute work only, reading nothing of the frame's
+    // raster (no card capture, no card lit from a shadow map rendered this frame): it may then
+    // go on the async compute queue. Plans the cards' levels for `camera` first.
+    bool recordIsComputeOnly(const DeferredRenderer& deferred, const scene::Camera& camera);
 
     void moveInstance(uint32_t instance, const glm::mat4& transform, std::span<const scene::Light> lights);
     void setLights(std::span<const scene::Light> lights, uint64_t lightsVersion);

@@ -45,6 +45,17 @@ public:
     // After deferred.recordLighting(frame) of the frame `camera` shows.
     virtual void record(FrameContext& frame, const DeferredRenderer& deferred,
                         const scene::Camera& camera) = 0;
+    // Async compute (docs/performance.md, change 3): records into `async`, a compute-queue list
+    // the GPU runs beside this frame's raster, those of this frame's passes that read nothing the
+    // raster writes, and returns true; the next record() then records only the rest. Returns
+    // false and records nothing when this frame's passes need the graphics queue (a raster pass)
+    // or the raster's output: then record() records them all. The caller makes record()'s work
+    // wait for `async`'s on the GPU. Called after deferred.recordLighting(), before record().
+    virtual bool recordBesideRaster(FrameContext& async, const DeferredRenderer& deferred,
+                                    const scene::Camera& camera) {
+        (void)async, (void)deferred, (void)camera;
+        return false;
+    }
     // The next frame keeps no view-dependent temporal history (a camera cut).
     virtual void resetHistory() = 0;
     // True once what the technique accumulates over frames has settled for a static scene (the

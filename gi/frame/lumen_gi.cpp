@@ -8,8 +8,21 @@ LumenGi::LumenGi(rhi::IDevice& device, const scene::Scene& scene, const GpuScene
       beforeProbes_(device.allocatedMemoryBytes()), probes_(device, width, height, settings.probes),
       afterProbes_(device.allocatedMemoryBytes()) {}
 
+bool LumenGi::recordBesideRaster(FrameContext& async, const DeferredRenderer& deferred,
+                                 const scene::Camera& camera) {
+    if (!scene_.recordIsComputeOnly(deferred, camera)) {
+        return false;
+    }
+    scene_.record(async, deferred, camera);
+    sceneRecordedBesideRaster_ = true;
+    return true;
+}
+
 void LumenGi::record(FrameContext& frame, const DeferredRenderer& deferred, const scene::Camera& camera) {
-    scene_.record(frame, deferred, camera);
+    if (!sceneRecordedBesideRaster_) {
+        scene_.record(frame, deferred, camera);
+    }
+    sceneRecordedBesideRaster_ = false;
     // Near-field hits read their cards' final lighting, far-field hits the cache's voxel lighting
     // (no volume of its own).
     const VoxelLighting cacheVoxels{};

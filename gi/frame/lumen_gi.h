@@ -34,6 +34,9 @@ public:
 
     GiTechnique technique() const override { return GiTechnique::Lumen; }
     void record(FrameContext& frame, const DeferredRenderer& deferred, const scene::Camera& camera) override;
+    // The SDF and surface cache update, when it is compute work only this frame.
+    bool recordBesideRaster(FrameContext& async, const DeferredRenderer& deferred,
+                            const scene::Camera& camera) override;
     // The next frame's probes start without history (a camera cut).
     void resetHistory() override { probes_.resetHistory(); }
     // The surface cache's radiosity has converged (the screen probes follow within frames).
@@ -60,6 +63,7 @@ public:
 private:
     LumenSettings settings_;
     GiSceneRepresentation scene_;
+    bool sceneRecordedBesideRaster_ = false; // this frame's scene update went to the async list
     uint64_t beforeProbes_;
     ScreenProbeGather probes_;
     uint64_t afterProbes_;

@@ -220,11 +220,24 @@ void SurfaceCache::updateLod(const glm::vec3& viewer) {
     }
 }
 
-void SurfaceCache::update(gi::FrameContext& frame, const std::optional<gi::ShadowedLights>& lights,
-                          const std::optional<glm::vec3>& viewer) {
-    if (viewer && lodViewer_ != viewer) {
+void SurfaceCache::planLod(const std::optional<glm::vec3>& viewer) {
+    if (viewer && lodViewer_ != viewer && !lodPlanned_) {
         updateLod(*viewer);
     }
+    lodPlanned_ = true;
+}
+
+bool SurfaceCache::updateIsComputeOnly(const std::optional<gi::ShadowedLights>& lights) const {
+    const bool lightsSeen = !lights || (directLightsVersion_ == lights->lightsVersion &&
+                                        directShadowFrames_ == lights->shadowFrames);
+    return initialised_ && updates_ > 0 && !cardsChanged_ && cards_.dirtyCardCount() == 0 &&
+           relightCards_.empty() && lightsSeen;
+}
+
+void SurfaceCache::update(gi::FrameContext& frame, const std::optional<gi::ShadowedLights>& lights,
+                          const std::optional<glm::vec3>& viewer) {
+    planLod(viewer);
+    lodPlanned_ = false;
     if (!initialised_) {
         atlas_.recordClear(frame.commands());
         voxels_.recordClear(frame.commands());

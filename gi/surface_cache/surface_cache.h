@@ -59,6 +59,14 @@ public:
     // cards it captures count as captured once it returns: submit the frame's commands.
     void update(gi::FrameContext& frame, const std::optional<gi::ShadowedLights>& lights = std::nullopt,
                 const std::optional<glm::vec3>& viewer = std::nullopt);
+    // The cards' levels follow `viewer` now rather than at the next update() (which then does not
+    // plan them again), so that updateIsComputeOnly() sees the captures a new plan asks for.
+    void planLod(const std::optional<glm::vec3>& viewer);
+    // True when the next update() with `lights` would record compute work only and read nothing
+    // the frame's raster wrote: no card to capture (a raster pass), no card to light again (that
+    // reads shadow maps rendered this frame). Such an update may go on the async compute queue
+    // (FrameRenderer::render with a SplitFrame). Call planLod() first.
+    bool updateIsComputeOnly(const std::optional<gi::ShadowedLights>& lights) const;
 
     // An instance moved: its cards are placed anew and captured at the next update, with the
     // cards it overlapped before or overlaps now; radiosity restarts within one ray's reach of
@@ -141,6 +149,7 @@ private:
     rhi::BufferHandle cardBvhBuffer_;
     LodHistory lodHistory_;
     std::optional<glm::vec3> lodViewer_; // where the levels were last planned from
+    bool lodPlanned_ = false;            // planLod ran since the last update
     bool initialised_ = false;           // the first update clears every layer and buffer
     bool cardsChanged_ = true;           // card buffer and tile-to-card lookup need an upload
     bool indirectChanged_ = false;       // radiosity wrote the indirect layer after the last combine

@@ -72,6 +72,53 @@ void FrameHarness::render(uint32_t count) {
     }
 }
 
+uint32_t FrameHarness::renderWithAsyncCompute(uint32_t count) {
+    if (!asyncList_) {
+        asyncList_ = device_.createCommandList(rhi::QueueType::Compute);
+        gatherList_ = device_.createCommandList(rhi::QueueType::Graphics);
+    }
+    rhi::IQueue& graphics = device_.queue(rhi::QueueType::Graphics);
+    rhi::IQueue& compute = device_.queue(rhi::QueueType::Compute);
+    uint32_t asyncFrames = 0;
+    for (uint32_t i = 0; i < count; ++i) {
+        list_->begin();
+        asyncList_->begin();
+        gatherList_->begin();
+        gi::FrameContext raster(pipelines_, *list_, frames_);
+        gi::FrameContext async(pipelines_, *asyncList_, frames_);
+        gi::FrameContext gather(pipelines_, *gatherList_, frames_);
+        ++frames_;
+        const bool besideRaster = renderer_.render(gi::SplitFrame{raster, async, gather});
+        list_->end();
+        asyncList_->end();
+        gatherList_->end();
+        std::vector<rhi::TimerResult> timers;
+        std::vector<gi::SkippedPass> skipped = raster.skipped();
+        uint64_t asyncDone = 0;
+        if (besideRaster) {
+            asyncDone = compute.submit(*asyncList_);
+            ++asyncFrames;
+        }
+        graphics.submit(*list_);
+        if (besideRaster) {
+            graphics.waitForQueue(compute, asyncDone);
+        }
+        graphics.waitForValue(graphics.submit(*gatherList_));
+        for (rhi::ICommandList* list :
+             {list_.get(), besideRaster ? asyncList_.get() : nullptr, gatherList_.get()}) {
+            if (list != nullptr) {
+                const std::vector<rhi::TimerResult> results = list->timerResults();
+                timers.insert(timers.end(), results.begin(), results.end());
+            }
+        }
+        for (const gi::FrameContext* part : {&async, &gather}) {
+            skipped.insert(skipped.end(), part->skipped().begin(), part->skipped().end());
+        }
+        timings_.addFrame(timers, skipped);
+    }
+    return asyncFrames;
+}
+
 bool FrameHarness::converged() const {
     return renderer_.gi() == nullptr || renderer_.gi()->converged();
 }

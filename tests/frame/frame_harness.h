@@ -42,6 +42,10 @@ public:
 
     // Renders `count` frames, each submitted and waited for.
     void render(uint32_t count = 1);
+    // The same with async compute, as `lumina render --async-compute` submits a frame
+    // (FrameRenderer's SplitFrame): raster and async lists, then the gather waiting for the async
+    // one. Returns the frames whose async list received passes.
+    uint32_t renderWithAsyncCompute(uint32_t count = 1);
     // Renders until the surface cache's radiosity has converged, then `extraFrames` more (the
     // screen probes' temporal filters settle); at most `maxFrames` in all. Returns the frames
     // rendered; converged() says whether the cache got there.
@@ -72,6 +76,8 @@ private:
     gi::PipelineCache pipelines_;
     gi::FrameRenderer renderer_;
     rhi::CommandListHandle list_;
+    rhi::CommandListHandle asyncList_;  // created by the first renderWithAsyncCompute
+    rhi::CommandListHandle gatherList_; // likewise
     gi::TimingTable timings_;
     uint32_t frames_ = 0;
 };
