@@ -17,7 +17,8 @@ frames=${LUMINA_ASYNC_FRAMES:-400}
   .devbin/lumina --list-devices 2>&1 | head -5
   for run in "city --technique ddgi --preset low" "city --technique ddgi --preset medium" \
       "city --technique lumen --preset low" "atrium --technique ddgi --preset medium" \
-      "atrium --technique lumen --preset medium" "cornell_box --technique ddgi --preset medium"; do
+      "atrium --technique lumen --preset medium" "cornell_box --technique ddgi --preset medium" \
+      "cornell_box_moving --technique lumen --preset medium"; do
     for mode in one-queue async; do
       flag=
       [ "$mode" = async ] && flag=--async-compute
