@@ -119,6 +119,10 @@ int renderWith(const ParsedArgs& args) {
         throw UsageError("--frames: at least one frame");
     }
     const auto exposure = static_cast<float>(args.getDouble("exposure", 0.0));
+    const std::string asyncMode = args.get("async-compute", "auto");
+    if (asyncMode != "auto" && asyncMode != "on" && asyncMode != "off") {
+        throw UsageError("--async-compute: '" + asyncMode + "' is not auto, on or off");
+    }
 
     scene::Scene loaded = scene::loadScene(args.positional.front(), sceneLoadOptions(args));
     if (args.common.size) {
@@ -229,7 +233,10 @@ int renderWith(const ParsedArgs& args) {
     const auto inFlight = static_cast<uint32_t>(args.getUint("frames-in-flight", 2, 1, kMaxFramesInFlight));
     // Async compute (docs/performance.md, change 3): each frame is recorded into three lists, and
     // the GI passes that read nothing of the frame's raster run on the compute queue beside it.
-    const bool asyncCompute = args.has("async-compute");
+    // By default only where the compute queue is hardware of its own: on a shared queue the split
+    // costs two more submissions a frame and overlaps nothing.
+    const bool asyncCompute =
+        asyncMode == "on" || (asyncMode == "auto" && device->capabilities().separateComputeQueue);
     struct InFlightFrame {
         rhi::CommandListHandle list;   // the whole frame; with async compute, its raster
         rhi::CommandListHandle async;  // with async compute: the compute queue's list
@@ -473,7 +480,7 @@ Command renderCommand() {
         .usage = "lumina render SCENE [--technique direct|lumen|ddgi|sh-grid] [--preset low|medium|high] "
                  "[--technique auto --error-budget E] [--out img.png] "
                  "[--exr img.exr] [--dump-buffers DIR] [--timings] [--timings-json PATH] [--frames N] "
-                 "[--warmup N] [--frames-in-flight N] [--async-compute] [--exposure EV] [--size WxH] "
+                 "[--warmup N] [--frames-in-flight N] [--async-compute auto|on|off] [--exposure EV] [--size WxH] "
                  "[--no-default-light] "
                  "[--sky FILE.exr "
                  "[--sky-intensity K]]",
@@ -521,10 +528,11 @@ Command renderCommand() {
              {"warmup", "N", "frames left out of the timings (default 0)"},
              {"frames-in-flight", "N",
               "frames recorded ahead of the GPU, 1..3 (default 2; 1 waits for each frame before the next)"},
-             {"async-compute", "",
-              "run the GI passes that read nothing of the frame's raster (the surface cache's and DDGI's "
-              "probe updates, when no card is captured or relit) on the compute queue beside the raster "
-              "(docs/performance.md)"},
+             {"async-compute", "MODE",
+              "auto, on or off: run the GI passes that read nothing of the frame's raster (the surface "
+              "cache's and DDGI's probe updates, when no card is captured or relit) on the compute queue "
+              "beside the raster (default auto: on where the device has a separate compute queue; "
+              "docs/performance.md)"},
              {"exposure", "EV", "exposure in stops before the tonemap (default 0)"},
              {"animation-frame", "F",
               "pose an animated scene at frame F and hold it still (default: play the animation, one loop "

@@ -2,7 +2,7 @@
 # Runs on the lent GPU machine (docs/gpu.md): what async compute buys `lumina render`
 # (docs/performance.md, change 3). Each scene and technique at 1920x1080 for LUMINA_ASYNC_FRAMES
 # frames (default 400, the first 100 left out), two frames in flight, no validation, with and
-# without --async-compute: the median wall time per frame (the GPU's throughput where the GPU
+# with --async-compute off and on: the median wall time per frame (the GPU's throughput where the GPU
 # is the longer side; the timings' frame row sums passes that overlap, so it does not show the
 # gain), and the two final images compared (they must be identical: the same passes in the
 # same order on the GPU). Writes $OUT/async_compute.txt.
@@ -20,8 +20,8 @@ frames=${LUMINA_ASYNC_FRAMES:-400}
       "atrium --technique lumen --preset medium" "cornell_box --technique ddgi --preset medium" \
       "cornell_box_moving --technique lumen --preset medium"; do
     for mode in one-queue async; do
-      flag=
-      [ "$mode" = async ] && flag=--async-compute
+      flag="--async-compute off"
+      [ "$mode" = async ] && flag="--async-compute on"
       echo "== $run, $mode"
       # shellcheck disable=SC2086
       timeout 240 .devbin/lumina render $run --size 1920x1080 --frames "$frames" --warmup 100 --timings \

@@ -20,3 +20,12 @@ expect_match(bad-extension "${ERR}" "image.jpg: the image is written as .png \\(
 if(EXISTS "${DIR}/image.jpg")
   message(FATAL_ERROR "[bad-extension] a file was written")
 endif()
+
+# --async-compute: auto, on or off (docs/performance.md, change 3); anything else is a usage
+# error before the scene loads. `on` on lavapipe (whose compute queue shares the graphics one)
+# still splits the frame and says so.
+run(2 bad-async-mode render cornell_box_point --technique direct --size 16x16 --frames 1 --async-compute maybe)
+expect_match(bad-async-mode "${ERR}" "--async-compute: 'maybe' is not auto, on or off")
+run(0 async-on render cornell_box_point --technique ddgi --preset low --size 16x16 --frames 3 --validation
+    --async-compute on --out "${DIR}/async.png")
+expect_match(async-on "${OUT}" "async compute: 2 of 3 frame\\(s\\) ran GI passes on the compute queue")
