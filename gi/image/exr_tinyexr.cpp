@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 
 #define TINYEXR_IMPLEMENTATION
 #include <tinyexr.h>
@@ -150,6 +152,22 @@ std::vector<std::vector<float>> dataPlanes(const EXRHeader& header, const EXRIma
     return planes;
 }
 
+// tinyexr 1.0.1's PIZ decoder copies the bitmap range a chunk declares (up to 8 KiB) without
+// checking that the chunk holds it, reading past the end of the file's bytes (found by the
+// tinyexr fuzzer, tests/fuzz/regressions/exr_tinyexr/piz_bitmap_*). The pixels are decoded from
+// the file's bytes followed by this many zeros, so that such a read stays in memory of ours; the
+// size tinyexr is given, and so every check it does make, is the file's own.
+constexpr size_t kPizOverreadPadding = 64 * 1024;
+
+std::vector<unsigned char> fileBytesWithPadding(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (!in.eof() && in.fail()) {
+        fail(path, "cannot read the file");
+    }
+    return bytes;
+}
+
 Image readPixels(const std::filesystem::path& path) {
     Header parsed(path);
     EXRHeader& header = parsed.get();
@@ -177,7 +195,10 @@ Image readPixels(const std::filesystem::path& path) {
     // (LeakSanitizer found it: Exr.TruncatedFileIsAnErrorNotACrash in .ci/sanitizers.sh).
     decoded.num_channels = header.num_channels;
     const char* error = nullptr;
-    const int code = LoadEXRImageFromFile(&decoded, &header, utf8Name(path).c_str(), &error);
+    std::vector<unsigned char> bytes = fileBytesWithPadding(path);
+    const size_t fileSize = bytes.size();
+    bytes.resize(fileSize + kPizOverreadPadding, 0);
+    const int code = LoadEXRImageFromMemory(&decoded, &header, bytes.data(), fileSize, &error);
     if (code != TINYEXR_SUCCESS) {
         // tinyexr has freed what it decoded (FreeEXRImage again would free it twice).
         fail(path, "cannot read EXR: " + takeError(error, code));

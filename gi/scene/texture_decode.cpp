@@ -50,6 +50,73 @@ void checkPngChunks(std::span<const uint8_t> bytes) {
     }
 }
 
+// stb_image (Debian's 2.27) builds a JPEG Huffman table from the sixteen code counts a DHT
+// segment declares without checking that they total at most 256 symbols, and writes past its
+// 257-entry size list when they do (found by the PNG/JPEG fuzzer,
+// tests/fuzz/regressions/png_reader/jpeg_dht_*). Every table of every DHT segment must declare at
+// most 256 symbols and fit in its segment. Progressive JPEGs put DHT segments between scans, so
+// the walk continues past each scan's entropy-coded data.
+void checkJpegHuffmanTables(std::span<const uint8_t> bytes) {
+    if (bytes.size() < 2 || bytes[0] != 0xFF || bytes[1] != 0xD8) {
+        return; // not a JPEG
+    }
+    const auto fail = [](size_t at, const std::string& what) {
+        throw TextureDecodeError("JPEG Huffman table at byte " + std::to_string(at) + ": " + what);
+    };
+    size_t offset = 2;
+    while (offset < bytes.size()) {
+        if (bytes[offset] != 0xFF) {
+            ++offset; // entropy-coded data of a scan: markers are found by their 0xFF
+            continue;
+        }
+        while (offset < bytes.size() && bytes[offset] == 0xFF) {
+            ++offset; // fill bytes before a marker
+        }
+        if (offset >= bytes.size()) {
+            return;
+        }
+        const uint8_t marker = bytes[offset++];
+        // Stuffed zero, restart markers, TEM and SOI have no segment; EOI ends the image.
+        if (marker == 0x00 || (marker >= 0xD0 && marker <= 0xD8) || marker == 0x01) {
+            continue;
+        }
+        if (marker == 0xD9 || bytes.size() - offset < 2) {
+            return;
+        }
+        const size_t length = size_t(bytes[offset]) << 8 | bytes[offset + 1];
+        if (marker == 0xC4 && (length < 2 || length > bytes.size() - offset)) {
+            // stb_image would read zeros past the end: the counts it read would still be these.
+            fail(offset, "its segment declares " + std::to_string(length) + " bytes, more than the " +
+                             std::to_string(bytes.size() - offset) + " left in the file");
+        }
+        if (length < 2 || length > bytes.size() - offset) {
+            return; // a segment past the end holds no table that is not caught above
+        }
+        if (marker == 0xC4) {
+            size_t table = offset + 2;
+            const size_t end = offset + length;
+            while (table < end) {
+                if (end - table < 17) {
+                    fail(table, "fewer than the 17 bytes of a table header left in its segment");
+                }
+                size_t symbols = 0;
+                for (size_t i = 1; i <= 16; ++i) {
+                    symbols += bytes[table + i];
+                }
+                if (symbols > 256) {
+                    fail(table, "declares " + std::to_string(symbols) + " codes, at most 256");
+                }
+                if (symbols > end - table - 17) {
+                    fail(table,
+                         "declares " + std::to_string(symbols) + " codes, more than its segment holds");
+                }
+                table += 17 + symbols;
+            }
+        }
+        offset += length;
+    }
+}
+
 } // namespace
 
 Texture decodeTexture(std::span<const uint8_t> bytes, uint64_t maxTexelBytes) {
@@ -57,6 +124,7 @@ Texture decodeTexture(std::span<const uint8_t> bytes, uint64_t maxTexelBytes) {
         throw TextureDecodeError("larger than 2 GiB");
     }
     checkPngChunks(bytes);
+    checkJpegHuffmanTables(bytes);
     auto checkSize = [maxTexelBytes](int width, int height) {
         if (uint64_t(width) * uint64_t(height) * 4 > maxTexelBytes) {
             throw TextureDecodeError(std::to_string(width) + "x" + std::to_string(height) +
