@@ -19,7 +19,8 @@ declare -A seeds=(
 )
 shopt -s nullglob globstar
 for name in "${!seeds[@]}"; do
-  cp "$build/${name}_fuzzer" "$dest/bin/"
+  # Without DWARF (function names stay for the reports): the folder travels to another machine.
+  strip --strip-debug -o "$dest/bin/${name}_fuzzer" "$build/${name}_fuzzer"
   mkdir -p "$dest/seeds/$name"
   # Seed globs are recursive as in run_fuzzer.cmake; files over 64 KiB are left out as there.
   set -f # the patterns are globbed below, recursively
