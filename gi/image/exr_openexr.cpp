@@ -11,7 +11,10 @@
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
+#include <ImfStdIO.h>
 #include <ImfTestFile.h>
+#include <ImfVersion.h>
+#include <ImfXdr.h>
 #include <algorithm>
 #include <exception>
 #include <half.h>
@@ -58,6 +61,25 @@ Window toWindow(const Imath::Box2i& box) {
     return {box.min.x, box.min.y, box.max.x, box.max.y};
 }
 
+// OpenEXR's InputFile allocates its line buffers and decompressor for the data window its
+// header declares before reading a pixel: a 976-byte file declaring a huge window made it
+// allocate 2 GiB (found by the OpenEXR fuzzer, tests/fuzz/regressions/exr_openexr/). The header
+// is read alone first and its windows checked against the image limits.
+void checkHeaderWindows(const std::filesystem::path& path) {
+    Imf::StdIFStream stream(fileName(path).c_str());
+    int magic = 0;
+    int version = 0;
+    Imf::Xdr::read<Imf::StreamIO>(stream, magic);
+    Imf::Xdr::read<Imf::StreamIO>(stream, version);
+    if (magic != Imf::MAGIC) {
+        fail(path, "not an OpenEXR file (or unreadable)");
+    }
+    Imf::Header header;
+    header.readFrom(stream, version);
+    exr_checks::checkWindow(path, toWindow(header.displayWindow()), "display");
+    exr_checks::checkWindow(path, toWindow(header.dataWindow()), "data");
+}
+
 ExrInfo infoFromHeader(const Imf::Header& header) {
     const Window display = toWindow(header.displayWindow());
     ExrInfo info;
@@ -71,6 +93,7 @@ ExrInfo infoFromHeader(const Imf::Header& header) {
 }
 
 Image readPixels(const std::filesystem::path& path) {
+    checkHeaderWindows(path);
     Imf::InputFile file(fileName(path).c_str());
     const Imf::Header& header = file.header();
     const Window display = toWindow(header.displayWindow());
@@ -122,6 +145,7 @@ Imf::Compression toImf(ExrCompression compression) {
 ExrInfo readExrInfo(const std::filesystem::path& path) {
     checkReadable(path);
     try {
+        checkHeaderWindows(path);
         Imf::InputFile file(fileName(path).c_str());
         return infoFromHeader(file.header());
     } catch (const ImageError&) {
