@@ -45,7 +45,8 @@ export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1:suppressions=$supp/ubsan
 jit='AnalyticLightTest|ConvergenceTest|DeterminismTest|EmitterTest|EnvironmentSkyTest|reference_cli_smoke|shard_smoke|auto_technique_smoke|device_lost_cli'
 status=0
 ctest --test-dir build-asan --output-on-failure -j2 -L 'unit|gpu' -E "$slow|$jit" || status=$?
-LSAN_OPTIONS=suppressions=$supp/lsan_lavapipe_jit.supp:print_suppressions=0 \
+cat "$supp/lsan.supp" "$supp/lsan_lavapipe_jit.supp" >build-asan/lsan_jit.supp
+LSAN_OPTIONS=suppressions=$PWD/build-asan/lsan_jit.supp:print_suppressions=0 \
   ctest --test-dir build-asan --output-on-failure -j2 -L 'unit|gpu' -E "$slow" -R "$jit" || status=$?
 echo "sanitizers: build $((built - start)) s, tests $(( $(date +%s) - built )) s, exit $status"
 exit "$status"
