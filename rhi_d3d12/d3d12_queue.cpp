@@ -1,5 +1,6 @@
 #include "rhi_d3d12/d3d12_queue.h"
 
+#include "rhi/fault_injection.h"
 #include "rhi_d3d12/d3d12_check.h"
 #include "rhi_d3d12/d3d12_command_list.h"
 
@@ -28,6 +29,10 @@ D3D12_COMMAND_LIST_TYPE toD3D12(rhi::QueueType type) {
 }
 
 void waitForFence(DeviceContext& context, ID3D12Fence* fence, uint64_t value, const char* what) {
+    if (rhi::fault::deviceLost()) {
+        context.throwDeviceLost(std::string(what) + " waited for fence value " + std::to_string(value) +
+                                rhi::fault::injectedNote());
+    }
     if (fence->GetCompletedValue() < value) {
         const HANDLE event = CreateEventW(nullptr, FALSE, FALSE, nullptr);
         if (!event) {
@@ -94,6 +99,16 @@ uint64_t Queue::submit(std::span<rhi::ICommandList* const> lists) {
         natives.push_back(native);
     }
     std::lock_guard lock(mutex_);
+    if (rhi::fault::deviceLostOnSubmit()) {
+        // What this queue ran before finishes for real (a blocking wait: no event), so that the
+        // teardown after the injected loss destroys nothing in use (rhi/fault_injection.h).
+        const uint64_t drained = ++lastSignaled_;
+        if (SUCCEEDED(queue_->Signal(fence_.Get(), drained))) {
+            fence_->SetEventOnCompletion(drained, nullptr);
+        }
+        context_->throwDeviceLost(std::string("ID3D12CommandQueue::ExecuteCommandLists on the ") +
+                                  rhi::queueTypeName(type_) + " queue" + rhi::fault::injectedNote());
+    }
     if (!submitted.empty()) {
         queue_->ExecuteCommandLists(static_cast<UINT>(submitted.size()), submitted.data());
     }
@@ -128,6 +143,10 @@ uint64_t Queue::lastSubmittedValue() {
 
 uint64_t Queue::completedValue() {
     const uint64_t value = fence_->GetCompletedValue();
+    if (rhi::fault::deviceLost()) {
+        context_->throwDeviceLost(std::string("completedValue() of the ") + rhi::queueTypeName(type_) +
+                                  " queue" + rhi::fault::injectedNote());
+    }
     if (value == UINT64_MAX && FAILED(context_->device()->GetDeviceRemovedReason())) {
         context_->throwDeviceLost(std::string("completedValue() of the ") + rhi::queueTypeName(type_) +
                                   " queue");

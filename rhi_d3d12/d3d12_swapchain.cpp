@@ -87,7 +87,11 @@ Swapchain::Swapchain(ContextHandle context, Queue& queue, const rhi::SwapchainDe
 }
 
 Swapchain::~Swapchain() {
-    waitForPresents();
+    try {
+        waitForPresents();
+    } catch (const rhi::Error&) {
+        // Device lost: nothing left to wait for, and destructors must not throw.
+    }
 }
 
 void Swapchain::getBuffers() {

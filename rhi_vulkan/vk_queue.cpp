@@ -1,6 +1,7 @@
 #include "rhi_vulkan/vk_queue.h"
 
 #include "rhi/error.h"
+#include "rhi/fault_injection.h"
 #include "rhi_vulkan/vk_check.h"
 #include "rhi_vulkan/vk_command_list.h"
 #include "rhi_vulkan/vk_context.h"
@@ -9,6 +10,20 @@
 #include <string>
 
 namespace lumina::vulkan {
+
+namespace {
+
+// A lost device's work ends in finite time and its objects may then be destroyed; an injected
+// loss (rhi/fault_injection.h) lets the driver finish what was submitted before, for real, so
+// that the teardown after it destroys nothing still in use.
+void finishForInjectedLoss(Context& context) {
+    for (const auto& hardware : {context.graphicsQueue(), context.computeQueue()}) {
+        std::lock_guard hardwareLock(hardware->submitMutex);
+        vkQueueWaitIdle(hardware->queue);
+    }
+}
+
+} // namespace
 
 Queue::Queue(std::shared_ptr<Context> context, rhi::QueueType type, std::shared_ptr<HardwareQueue> hardware)
     : context_(std::move(context)), type_(type), hardware_(std::move(hardware)) {
@@ -60,10 +75,15 @@ uint64_t Queue::submit(std::span<rhi::ICommandList* const> lists) {
     submit.pCommandBufferInfos = buffers.data();
     submit.signalSemaphoreInfoCount = 1;
     submit.pSignalSemaphoreInfos = &signal;
+    const std::string what =
+        std::string(rhi::queueTypeName(type_)) + " queue, value " + std::to_string(value);
+    if (rhi::fault::deviceLostOnSubmit()) {
+        finishForInjectedLoss(*context_);
+        check(VK_ERROR_DEVICE_LOST, "vkQueueSubmit2", what + rhi::fault::injectedNote());
+    }
     {
         std::lock_guard hardwareLock(hardware_->submitMutex);
-        check(vkQueueSubmit2(hardware_->queue, 1, &submit, VK_NULL_HANDLE), "vkQueueSubmit2",
-              std::string(rhi::queueTypeName(type_)) + " queue, value " + std::to_string(value));
+        check(vkQueueSubmit2(hardware_->queue, 1, &submit, VK_NULL_HANDLE), "vkQueueSubmit2", what);
     }
     lastSubmitted_ = value;
     pendingWaits_.clear();
@@ -100,6 +120,10 @@ void Queue::waitForQueue(rhi::IQueue& other, uint64_t value) {
 
 uint64_t Queue::completedValue() {
     uint64_t value = 0;
+    if (rhi::fault::deviceLost()) {
+        check(VK_ERROR_DEVICE_LOST, "vkGetSemaphoreCounterValue",
+              std::string(rhi::queueTypeName(type_)) + " queue" + rhi::fault::injectedNote());
+    }
     check(vkGetSemaphoreCounterValue(context_->device(), timeline_, &value), "vkGetSemaphoreCounterValue",
           std::string(rhi::queueTypeName(type_)) + " queue");
     return value;
@@ -111,6 +135,11 @@ void Queue::waitForValue(uint64_t value) {
         throw rhi::Error(std::string("waitForValue: the ") + rhi::queueTypeName(type_) +
                          " queue has submitted only " + std::to_string(submitted) + ", waiting for " +
                          std::to_string(value) + " would never return");
+    }
+    if (rhi::fault::deviceLost()) {
+        check(VK_ERROR_DEVICE_LOST, "vkWaitSemaphores",
+              std::string(rhi::queueTypeName(type_)) + " queue, value " + std::to_string(value) +
+                  rhi::fault::injectedNote());
     }
     auto info = vkStruct<VkSemaphoreWaitInfo>(VK_STRUCTURE_TYPE_SEMAPHORE_WAIT_INFO);
     info.semaphoreCount = 1;

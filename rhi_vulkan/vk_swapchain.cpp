@@ -102,7 +102,11 @@ Swapchain::Swapchain(std::shared_ptr<Context> context, const rhi::SwapchainDesc&
 }
 
 Swapchain::~Swapchain() {
-    waitForPresents();
+    try {
+        waitForPresents();
+    } catch (const rhi::Error&) {
+        // Device lost: nothing left to wait for, and destructors must not throw.
+    }
     const VkDevice device = context_->device();
     destroyImageSemaphores();
     if (swapchain_) {

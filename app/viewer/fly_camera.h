@@ -22,6 +22,13 @@ public:
     // True when the camera moved.
     bool update(const FlyInput& input, float seconds);
     const scene::Camera& camera() const { return camera_; }
+    // The camera with the world up it flies about as its up: the same view, and a FlyCamera
+    // started from it flies as this one does (the saved settings' camera).
+    scene::Camera uprightCamera() const {
+        scene::Camera upright = camera_;
+        upright.up = worldUp_;
+        return upright;
+    }
     float speed() const { return baseSpeed_ * speedScale_; }
 
 private:

@@ -3,8 +3,10 @@
 #include "app/command.h"
 #include "app/viewer/viewer.h"
 #include "app/viewer/viewer_options.h"
+#include "app/viewer/viewer_settings.h"
 #include "gi/scene/scene_loader.h"
 #include "rhi/error.h"
+#include "rhi/out_of_memory_error.h"
 
 #include <exception>
 #include <iostream>
@@ -15,10 +17,18 @@ constexpr int kExitUsage = 2;
 
 int run(const std::vector<std::string>& args) {
     using namespace lumina;
-    const app::viewer::ViewerOptions options = app::viewer::parseViewerOptions(args);
+    app::viewer::ViewerOptions options = app::viewer::parseViewerOptions(args);
     if (options.help) {
         app::viewer::printViewerHelp();
         return 0;
+    }
+    // Saved settings fill in what the flags leave open (app/viewer/viewer_settings.h).
+    const std::optional<std::filesystem::path> settingsPath = app::viewer::viewerSettingsPath(options);
+    if (settingsPath) {
+        if (const auto saved = app::viewer::loadViewerSettings(*settingsPath)) {
+            app::viewer::applySavedSettings(*saved, options);
+            std::cout << "settings: read from " << settingsPath->string() << '\n';
+        }
     }
     scene::Scene scene = scene::loadScene(options.scene);
     if (options.common.size) {
@@ -27,7 +37,7 @@ int run(const std::vector<std::string>& args) {
     rhi::DeviceHandle device = app::openDevice(options.common, /*presentation=*/true);
     std::cout << "device: " << device->adapter().name << " (" << rhi::apiName(device->api()) << ")\n"
               << "scene: " << scene.name << ", " << scene.image.width << "x" << scene.image.height << '\n';
-    app::viewer::Viewer viewer(*device, options, std::move(scene));
+    app::viewer::Viewer viewer(*device, options, std::move(scene), settingsPath);
     return viewer.run();
 }
 
@@ -39,6 +49,14 @@ int main(int argc, char** argv) {
     } catch (const lumina::app::UsageError& error) {
         std::cerr << "lumina-viewer: " << error.what() << '\n';
         return kExitUsage;
+    } catch (const lumina::rhi::OutOfMemoryError& error) {
+        // The GPU memory the viewer's --size, technique and preset need, named by the RHI.
+        std::cerr << "lumina-viewer: error: " << error.what()
+                  << "\n  (a smaller --size, a lower --preset or a smaller scene needs less GPU memory)\n";
+        return 1;
+    } catch (const lumina::rhi::DeviceLostError& error) {
+        std::cerr << "lumina-viewer: error: the GPU device was lost: " << error.what() << '\n';
+        return 1;
     } catch (const std::exception& error) {
         std::cerr << "lumina-viewer: " << error.what() << '\n';
         return 1;

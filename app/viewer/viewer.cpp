@@ -2,6 +2,8 @@
 
 #include "app/cli.h"
 #include "app/viewer/screenshot.h"
+#include "rhi/error.h"
+#include "rhi/out_of_memory_error.h"
 #include "rhi/transfer.h"
 
 #define GLFW_INCLUDE_NONE
@@ -35,12 +37,14 @@ uint64_t allocated(rhi::IDevice& device) {
 
 } // namespace
 
-Viewer::Viewer(rhi::IDevice& device, const ViewerOptions& options, scene::Scene scene)
+Viewer::Viewer(rhi::IDevice& device, const ViewerOptions& options, scene::Scene scene,
+               std::optional<std::filesystem::path> settingsPath)
     : device_(device), options_(options), scene_(std::move(scene)),
       window_("lumina-viewer: " + scene_.name, scene_.image.width, scene_.image.height),
       shaders_(std::make_unique<rhi::ShaderLibrary>(device)),
       pipelines_(std::make_unique<gi::PipelineCache>(device, *shaders_)),
-      camera_(scene_.camera, scene_.worldBounds()), edits_(scene_) {
+      settingsPath_(std::move(settingsPath)),
+      camera_(options.camera.value_or(scene_.camera), scene_.worldBounds()), edits_(scene_) {
     sceneBounds_ = scene_.worldBounds();
     sceneDiagonal_ = sceneBounds_.empty() ? 1.0f : glm::length(sceneBounds_.max - sceneBounds_.min);
     state_.slice.position = sceneBounds_.empty() ? 0.0f : 0.5f * (sceneBounds_.min.z + sceneBounds_.max.z);
@@ -62,6 +66,8 @@ Viewer::Viewer(rhi::IDevice& device, const ViewerOptions& options, scene::Scene 
     gpuScene_ = std::make_unique<gi::GpuScene>(device_, scene_);
     memory_.scene = allocated(device_) - beforeScene;
     buildRenderer();
+    std::cout << "technique: " << state_.technique << ", preset " << state_.preset << ", exposure "
+              << state_.exposureEv << " EV" << std::endl;
 
     const uint64_t beforeViewer = allocated(device_);
     ui_ = std::make_unique<UiRenderer>(device_);
@@ -73,6 +79,7 @@ Viewer::Viewer(rhi::IDevice& device, const ViewerOptions& options, scene::Scene 
     resizeIfNeeded();
     memory_.viewer = allocated(device_) - beforeViewer;
     pendingView_ = options.view; // chosen once the first frame has completed the list
+    pendingViewOptional_ = options.viewFromSettings;
     startHotReload();
     inFlight_.resize(options.framesInFlight);
     for (InFlight& slot : inFlight_) {
@@ -81,7 +88,12 @@ Viewer::Viewer(rhi::IDevice& device, const ViewerOptions& options, scene::Scene 
 }
 
 Viewer::~Viewer() {
-    device_.waitIdle();
+    try {
+        device_.waitIdle();
+    } catch (const rhi::Error&) {
+        // A lost device: nothing left to wait for (run() has reported it), and destructors must
+        // not throw.
+    }
     ui_.reset();
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();
@@ -161,8 +173,49 @@ void Viewer::buildRenderer() {
     memory_.renderer = allocated(device_) - before;
     memory_.gi = renderer_->gi() ? renderer_->gi()->memory() : std::vector<gi::GiMemoryPart>{};
     renderer_->setCamera(camera_.camera());
+    builtTechnique_ = state_.technique;
+    builtPreset_ = state_.preset;
     listViews();
     viewsComplete_ = false;
+}
+
+// A technique or preset that needs more GPU memory than there is leaves the viewer on the one
+// it had, with the reason in the status line, instead of ending it.
+void Viewer::rebuildRenderer() {
+    try {
+        buildRenderer();
+        state_.status = "renderer rebuilt: " + state_.technique +
+                        (renderer_->gi() ? ", preset " + state_.preset : std::string());
+    } catch (const rhi::OutOfMemoryError& e) {
+        state_.status = "not enough GPU memory for " + state_.technique + ", preset " + state_.preset + " (" +
+                        e.what() + "); back to " + builtTechnique_ + ", preset " + builtPreset_;
+        state_.technique = builtTechnique_;
+        state_.preset = builtPreset_;
+        buildRenderer();
+    }
+}
+
+ViewerSettings Viewer::currentSettings() const {
+    return {.scene = options_.scene,
+            .technique = state_.technique,
+            .preset = state_.preset,
+            .exposureEv = state_.exposureEv,
+            .vsync = state_.vsync,
+            .view = state_.view < state_.views.size() && state_.view != 0 ? state_.views[state_.view].name
+                                                                          : std::string(),
+            .camera = camera_.uprightCamera()};
+}
+
+void Viewer::saveSettings() {
+    if (!settingsPath_) {
+        return;
+    }
+    try {
+        saveViewerSettings(*settingsPath_, currentSettings());
+        std::cout << "settings: saved to " << settingsPath_->string() << std::endl;
+    } catch (const std::exception& e) {
+        std::cerr << "lumina-viewer: " << e.what() << '\n';
+    }
 }
 
 // The renderer's buffers as the view menu; the same buffer stays on screen when the list still
@@ -183,7 +236,11 @@ void Viewer::completeViews() {
     listViews();
     viewsComplete_ = true;
     if (!pendingView_.empty()) {
-        selectView(pendingView_);
+        const bool listed = std::any_of(state_.views.begin(), state_.views.end(),
+                                        [&](const BufferView& view) { return view.name == pendingView_; });
+        if (listed || !pendingViewOptional_) {
+            selectView(pendingView_);
+        }
         pendingView_.clear();
     }
     if (!viewsPrinted_) {
@@ -197,9 +254,7 @@ void Viewer::applyEdits() {
     if (state_.rebuildRenderer) {
         state_.rebuildRenderer = false;
         shownImage_.reset(); // it may be the old renderer's
-        buildRenderer();
-        state_.status = "renderer rebuilt: " + state_.technique +
-                        (renderer_->gi() ? ", preset " + state_.preset : std::string());
+        rebuildRenderer();
         std::cout << state_.status << std::endl;
     }
     // Lights, objects, emission and the animation edit scene_; the renderer recomputes only what
@@ -429,6 +484,21 @@ void Viewer::takeScreenshot(const std::filesystem::path& path) {
 }
 
 int Viewer::run() {
+    int code = 0;
+    try {
+        code = runFrames();
+    } catch (const rhi::DeviceLostError&) {
+        saveSettings();
+        throw;
+    } catch (const rhi::OutOfMemoryError&) {
+        saveSettings();
+        throw;
+    }
+    saveSettings();
+    return code;
+}
+
+int Viewer::runFrames() {
     rhi::IQueue& queue = device_.queue(rhi::QueueType::Graphics);
     const uint64_t lastFrame =
         options_.screenshotAfter ? *options_.screenshotAfter : options_.common.frames.value_or(0);

@@ -10,6 +10,7 @@
 #include "app/viewer/shader_hot_reload.h"
 #include "app/viewer/ui_renderer.h"
 #include "app/viewer/viewer_options.h"
+#include "app/viewer/viewer_settings.h"
 #include "gi/core/pipeline_cache.h"
 #include "gi/frame/frame_renderer.h"
 #include "gi/gpu_scene/gpu_scene.h"
@@ -55,9 +56,12 @@ struct MemoryUse {
 
 class Viewer {
 public:
-    Viewer(rhi::IDevice& device, const ViewerOptions& options, scene::Scene scene);
+    // `settingsPath`: where the settings are saved at exit (none: not saved).
+    Viewer(rhi::IDevice& device, const ViewerOptions& options, scene::Scene scene,
+           std::optional<std::filesystem::path> settingsPath);
     ~Viewer();
-    // Returns the exit code.
+    // Returns the exit code. A lost device or a failed allocation saves the settings first and
+    // then throws on (rhi::DeviceLostError, rhi::OutOfMemoryError) for main to report.
     int run();
 
 private:
@@ -67,7 +71,11 @@ private:
         std::vector<gi::SkippedPass> skipped;
     };
 
+    int runFrames();
     void buildRenderer();
+    void rebuildRenderer();
+    ViewerSettings currentSettings() const;
+    void saveSettings();
     void applyEdits();
     void handleKeys(float seconds);
     void resizeIfNeeded();
@@ -101,7 +109,10 @@ private:
     std::unique_ptr<HotReloadTest> hotReloadTest_;
     bool viewsComplete_ = false; // listed after the renderer's first frame
     bool viewsPrinted_ = false;
-    std::string pendingView_; // --view, chosen once the list is complete
+    std::string pendingView_;          // --view, chosen once the list is complete
+    bool pendingViewOptional_ = false; // from the saved settings: skipped when the list lacks it
+    std::optional<std::filesystem::path> settingsPath_;
+    std::string builtTechnique_, builtPreset_; // the renderer's, for going back after a failed rebuild
     std::unique_ptr<gi::GpuScene> gpuScene_;
     std::unique_ptr<gi::FrameRenderer> renderer_;
     FlyCamera camera_;

@@ -23,6 +23,11 @@ const std::vector<FlagSpec>& viewerFlags() {
         {"frames-in-flight", "N", "frames the CPU may queue ahead of the display: 2 or 3 (default 2)"},
         {"screenshot-after", "N PATH", "render N frames, write the frame to PATH (.png or .exr), exit"},
         {"view", "NAME", "start on a debug view, by its name in the view menu (e.g. 'gbuffer: normal')"},
+        {"settings", "PATH",
+         "where the settings (technique, preset, exposure, vsync, view, camera) are read at start and "
+         "saved at exit, also when the GPU is lost or out of memory (default: "
+         "$XDG_CONFIG_HOME/lumina/viewer.json or ~/.config/lumina/viewer.json; runs with --frames, "
+         "--screenshot-after or a test flag use none unless given)"},
         {"screenshot-window", "", "screenshots show the window, UI included, instead of the rendered frame"},
         {"no-hot-reload", "",
          "do not recompile a kernel when its HLSL file is saved (SPIR-V builds with glslang)"},
@@ -146,7 +151,10 @@ ViewerOptions parseViewerOptions(const std::vector<std::string>& rawArgs) {
     options.technique = parsed.get("technique");
     options.preset = parsed.get("preset");
     options.exposureEv = static_cast<float>(parsed.getDouble("exposure", 0.0));
+    options.exposureSet = parsed.has("exposure");
     options.vsync = !parsed.has("no-vsync");
+    options.vsyncSet = parsed.has("no-vsync");
+    options.settingsPath = parsed.get("settings");
     options.framesInFlight = static_cast<uint32_t>(parsed.getUint("frames-in-flight", 2, 2, 3));
     options.testResize = parsed.has("test-resize");
     options.hotReload = !parsed.has("no-hot-reload");

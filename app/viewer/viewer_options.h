@@ -2,6 +2,7 @@
 // `lumina-viewer SCENE [flags]`: the flags, their help and their parsing. The grammar is the
 // `lumina` CLI's (app/cli.h): a bad flag or value is a UsageError, exit code 2.
 #include "app/cli.h"
+#include "gi/scene/scene.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -17,7 +18,15 @@ struct ViewerOptions {
     std::string technique; // empty: the scene's, else lumen
     std::string preset;    // empty: the scene's, else medium
     float exposureEv = 0.0f;
+    bool exposureSet = false; // --exposure given: saved settings do not replace it
     bool vsync = true;
+    bool vsyncSet = false; // --no-vsync given
+    // --settings PATH (empty: the default place, app/viewer/viewer_settings.h).
+    std::filesystem::path settingsPath;
+    // From the saved settings (viewer_settings.h): the camera of the same scene, and whether
+    // `view` came from them (a view the technique lacks is then skipped, not an error).
+    std::optional<scene::Camera> camera;
+    bool viewFromSettings = false;
     uint32_t framesInFlight = 2;
     // --screenshot-after N PATH: render N frames, write PATH (.png or .exr), exit.
     std::optional<uint32_t> screenshotAfter;
