@@ -13,6 +13,7 @@
 #include "gi/core/timing_table.h"
 #include "gi/deferred/buffer_readback.h"
 #include "gi/frame/frame_dump.h"
+#include "gi/frame/frame_finite_check.h"
 #include "gi/frame/frame_renderer.h"
 #include "gi/gpu_scene/gpu_scene.h"
 #include "gi/image/exr.h"
@@ -29,7 +30,9 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 namespace lumina::app {
@@ -245,6 +248,13 @@ int renderWith(const ParsedArgs& args) {
             slot.fence = 0;
         }
     };
+    // --check-finite: every pass's float outputs scanned after it; each frame waited for and its
+    // first non-finite write, if any, is an error naming the pass and the resource.
+    std::optional<gi::FiniteCheck> finiteCheck;
+    if (args.has("check-finite")) {
+        finiteCheck.emplace(*device);
+        gi::watchFloatBuffers(*finiteCheck, renderer);
+    }
     std::vector<double> wallMs;
     auto lastFrameEnd = std::chrono::steady_clock::now();
     uint32_t settledAt = 0; // the frame after which the surface cache had converged; 0: not yet
@@ -261,6 +271,9 @@ int renderWith(const ParsedArgs& args) {
         retire(slot);
         slot.list->begin();
         gi::FrameContext frame(pipelines, *slot.list, frameIndex);
+        if (finiteCheck) {
+            finiteCheck->beginFrame(frame);
+        }
         renderer.render(frame);
         if (renderer.lastChanges().any()) {
             ++changedFrames;
@@ -271,6 +284,12 @@ int renderWith(const ParsedArgs& args) {
         slot.list->end();
         slot.fence = queue.submit(*slot.list);
         slot.skipped = frame.skipped();
+        if (finiteCheck) {
+            retire(slot);
+            if (const std::optional<gi::NonFiniteWrite> bad = finiteCheck->report()) {
+                throw std::runtime_error("--check-finite: " + bad->describe());
+            }
+        }
         const auto now = std::chrono::steady_clock::now();
         if (frameIndex >= warmup) {
             wallMs.push_back(std::chrono::duration<double, std::milli>(now - lastFrameEnd).count());
@@ -294,6 +313,10 @@ int renderWith(const ParsedArgs& args) {
     // The frames still in flight, oldest first, so the table keeps frame order.
     for (uint32_t i = 0; i < inFlight; ++i) {
         retire(slots[(rendered + i) % inFlight]);
+    }
+    if (finiteCheck) {
+        std::cout << "check-finite: " << rendered << " frame(s), " << finiteCheck->checksLastFrame()
+                  << " pass outputs checked in the last; no NaN or Inf\n";
     }
     if (timings && !wallMs.empty()) {
         std::cout << "wall time: " << std::fixed << std::setprecision(3) << gi::median(wallMs)
@@ -406,7 +429,8 @@ Command renderCommand() {
         .summary = "render a scene in real time: deferred direct light plus GI (lumen)",
         .usage = "lumina render SCENE [--technique direct|lumen|ddgi|sh-grid] [--preset low|medium|high] "
                  "[--technique auto --error-budget E] [--out img.png] "
-                 "[--exr img.exr] [--dump-buffers DIR] [--timings] [--timings-json PATH] [--frames N] "
+                 "[--exr img.exr] [--dump-buffers DIR] [--check-finite] [--timings] [--timings-json PATH] "
+                 "[--frames N] "
                  "[--warmup N] [--frames-in-flight N] [--exposure EV] [--size WxH] [--no-default-light] "
                  "[--sky FILE.exr "
                  "[--sky-intensity K]]",
@@ -423,7 +447,11 @@ Command renderCommand() {
             "frame (60 with --timings). --exr writes the linear HDR radiance; --dump-buffers writes every "
             "intermediate (GBuffer, shadow maps, direct light, indirect term, every surface-cache layer, "
             "card outlines and ids, radiosity probes, voxel lighting, every screen-probe buffer) as EXR "
-            "and PNG. --timings prints the median GPU time of each pass from timestamp queries and how "
+            "and PNG. --check-finite scans, after every pass of every frame, the float textures the pass "
+            "wrote (and the screen probes' float4 buffers) with a small kernel counting NaN and Inf, and stops at "
+            "the first frame with one: an error (exit 1) naming the first pass, in recording order, that "
+            "wrote a non-finite value and the texture or buffer (docs/gi_tests.md#poison); it waits for each "
+            "frame. --timings prints the median GPU time of each pass from timestamp queries and how "
             "often each pass was skipped and why (shadow maps and surface-cache passes run only when "
             "something they read changed). A scene with an animation (glTF channels or scripted changes, "
             "docs/scenes.md) plays it, one loop unless --frames, and only what each frame changed is "
@@ -449,6 +477,9 @@ Command renderCommand() {
               "preset's, a tenth of the scene's largest extent)"},
              {"exr", "PATH", "also write the linear HDR result as EXR"},
              {"dump-buffers", "DIR", "write every intermediate buffer into DIR"},
+             {"check-finite", "",
+              "after every pass, scan what it wrote for NaN/Inf; the first found is an error naming the pass "
+              "and the buffer (a debug mode: waits for each frame)"},
              {"timings", "", "print the GPU time per pass (direct: 60 frames unless --frames)"},
              {"timings-json", "PATH", "write the per-pass timings as JSON"},
              {"warmup", "N", "frames left out of the timings (default 0)"},
