@@ -21,6 +21,9 @@ gi::FrameRendererSettings rendererSettings(const scene::Scene& scene, const Fram
         if (settings.probeSpacing != 0) {
             out.lumen->probes.probeSpacing = settings.probeSpacing;
         }
+        if (settings.adjustLumen) {
+            settings.adjustLumen(*out.lumen);
+        }
     }
     if (settings.technique == gi::GiTechnique::Ddgi) {
         out.ddgi = testDdgiSettings(settings.preset, scene);

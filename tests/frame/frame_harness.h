@@ -34,6 +34,8 @@ struct FrameHarnessSettings {
     // Changes to the DDGI preset's settings (the ddgi technique only): fewer probes, a lower
     // hysteresis so that a test converges sooner.
     std::function<void(gi::DdgiSettings&)> adjustDdgi = nullptr;
+    // Changes to the lumen preset's settings (the lumen technique only): a smaller atlas.
+    std::function<void(gi::LumenSettings&)> adjustLumen = nullptr;
     // Changes to the SH grid preset's settings (the sh-grid technique only).
     std::function<void(gi::ShGridSettings&)> adjustShGrid = nullptr;
     // Runs the finite check (gi/core/finite_check.h) over every pass of every frame;

@@ -1,13 +1,14 @@
-// Poison never spreads (issue 24, docs/gi_tests.md#poison). A converged lumen frame of the
-// Cornell box (its emissive quad plus a point light, 48x48, low preset) gets NaN, +Inf, a negative
-// value and 1e6 times the value into one input for one frame, through the update paths a dynamic
+// Poison never spreads (issue 24, docs/gi_tests.md#poison). A lumen frame of the
+// Cornell box (its emissive quad plus a point light, 48x48, low preset, 512^2 atlas) gets NaN, +Inf, a
+// negative value and 1e6 times the value into one input for one frame, through the update paths a dynamic
 // scene uses (FrameRenderer::setLights, setEmission, moveInstance), and the input is restored the
 // frame after. A clean run renders the same frames in lockstep. Every frame:
 //   - the finite check (gi/core/finite_check.h) finds no NaN or Inf in anything any pass wrote,
 //     the screen-probe radiance history included;
 //   - the final HDR image and every history lumen keeps (screen-probe radiance history, the screen
 //     temporal irradiance, the surface cache's radiosity and final lighting) are compared with the
-//     clean run's by relMSE, and from a stated frame on all are within kRecoveredRelMse.
+//     clean run's by relMSE (the surface cache card by card), and from kRecoveryFrames on each is
+//     within its bound (kCompared). A refused value must leave every frame identical.
 // Site by site (one test each), value after value in one run: each value starts from the state the
 // previous one recovered to. A material texel is no site of its own: material textures are RGBA8
 // (scene::Texture::rgba8), which holds no NaN, Inf or negative value, and a float sky is refused at
@@ -21,6 +22,7 @@
 #include "tests/frame/frame_harness.h"
 #include "tests/rhi/gpu_test_fixture.h"
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -34,14 +36,21 @@ namespace lumina::test {
 namespace {
 
 constexpr uint32_t kSize = 48;
-constexpr uint32_t kSettleFrames = 16; // after the surface cache converged
+// The low preset's atlas is 2048^2; the box's cards fit in 512^2, and the test reads two of its
+// layers from both runs every frame.
+constexpr uint32_t kAtlasSize = 512;
+// Frames both runs render before the first poison. The clean run is the reference frame by frame
+// (the two runs are the same computation), so neither needs to have converged.
+constexpr uint32_t kWarmFrames = 24;
 // Within this relMSE of the clean run an image or history has recovered: the wander between
 // converged frames of one run is up to 0.0022 (frame_stability_stress_test.cpp).
 constexpr double kRecoveredRelMse = 0.01;
-// Frames watched after the poisoned one, and the frame (1 = the poisoned frame) from which every
-// watched frame must be recovered. Measured on lavapipe: see kMeasured below and docs/gi_tests.md.
-constexpr uint32_t kWatchFrames = 48;
-constexpr uint32_t kRecoveryFrames = 32;
+// Frames watched after a value the renderer took (1e6x), and the frame (1 = the poisoned frame)
+// from which every watched frame must be recovered; a refused value is watched for
+// kRefusedWatchFrames frames and must never differ. Measured on lavapipe: docs/gi_tests.md#poison.
+constexpr uint32_t kWatchFrames = 72;
+constexpr uint32_t kRecoveryFrames = 64;
+constexpr uint32_t kRefusedWatchFrames = 2;
 
 enum class Poison { NaN, PlusInf, Negative, Times1e6 };
 constexpr Poison kPoisons[] = {Poison::NaN, Poison::PlusInf, Poison::Negative, Poison::Times1e6};
@@ -176,7 +185,17 @@ struct FrameState {
     std::vector<gpu::ScreenProbe> probes;
     std::vector<glm::vec4> radiosity;
     std::vector<glm::vec4> finalLighting;
+    std::vector<glm::uvec4> cardRects; // each card's atlas rectangle: x, y, width, height
+    uint32_t atlasSize = 0;
 };
+
+std::vector<glm::uvec4> cardRects(const surface_cache::SurfaceCache& cache) {
+    std::vector<glm::uvec4> rects;
+    for (const auto& card : cache.cards().cards()) {
+        rects.push_back(card.atlasRect);
+    }
+    return rects;
+}
 
 FrameState readState(rhi::IDevice& device, FrameHarness& h) {
     const gi::ScreenProbeGather& gather = h.lumen().screenProbes();
@@ -187,39 +206,79 @@ FrameState readState(rhi::IDevice& device, FrameHarness& h) {
             .probeHistory = rhi::readBufferAs<glm::vec4>(device, *r.history[gather.current()]),
             .probes = rhi::readBufferAs<gpu::ScreenProbe>(device, *r.probes[gather.current()]),
             .radiosity = cache.readLayer(surface_cache::AtlasLayer::IndirectLight),
-            .finalLighting = cache.readLayer(surface_cache::AtlasLayer::FinalLighting)};
+            .finalLighting = cache.readLayer(surface_cache::AtlasLayer::FinalLighting),
+            .cardRects = cardRects(cache),
+            .atlasSize = cache.atlas().size()};
 }
 
-// The largest relMSE of the poisoned frame's image and histories against the clean one's, and
-// which it was.
-std::pair<double, const char*> worstError(const FrameState& clean, const FrameState& test) {
+// An atlas layer card by card: the texels of each card that has a rectangle of the same size in
+// both runs, in card order. A card the scale poison made huge comes back at another place in the
+// atlas (the allocator is not undone), so the atlas is not compared texel for texel.
+std::pair<std::vector<glm::vec4>, std::vector<glm::vec4>> byCard(const FrameState& clean,
+                                                                 const std::vector<glm::vec4>& cleanLayer,
+                                                                 const FrameState& test,
+                                                                 const std::vector<glm::vec4>& testLayer) {
+    std::pair<std::vector<glm::vec4>, std::vector<glm::vec4>> out;
+    for (size_t card = 0; card < clean.cardRects.size() && card < test.cardRects.size(); ++card) {
+        const glm::uvec4 a = clean.cardRects[card], b = test.cardRects[card];
+        if (a.z != b.z || a.w != b.w) {
+            continue;
+        }
+        for (uint32_t y = 0; y < a.w; ++y) {
+            for (uint32_t x = 0; x < a.z; ++x) {
+                out.first.push_back(cleanLayer[size_t(a.y + y) * clean.atlasSize + a.x + x]);
+                out.second.push_back(testLayer[size_t(b.y + y) * test.atlasSize + b.x + x]);
+            }
+        }
+    }
+    return out;
+}
+
+// What is compared with the clean run, and the relMSE under which it has recovered.
+struct Compared {
+    const char* name;
+    double recoveredRelMse;
+};
+// The image, the screen temporal filter and the surface cache's final lighting: kRecoveredRelMse.
+// The probes' radiance history and the radiosity are noisy estimates compared texel by texel, and
+// two runs that once diverged keep different, equally valid noise: measured, the probe history of
+// a run that recovered wanders between relMSE 0.0076 and 0.011 of the clean run's from frame 64 to
+// 160 while its image is within 0.003, and the radiosity of the cards the scale poison re-placed is
+// 0.010 off after 96 frames while their final lighting is within 0.0026. Their bound is that noise
+// floor with margin.
+constexpr Compared kCompared[] = {
+    {"final HDR", kRecoveredRelMse},
+    {"screen temporal irradiance", kRecoveredRelMse},
+    {"surface-cache radiosity (indirect light)", 0.03},
+    {"surface-cache final lighting", kRecoveredRelMse},
+    {"screen-probe radiance history", 0.03},
+};
+constexpr size_t kComparedCount = std::size(kCompared);
+
+// The relMSE of each of kCompared, the poisoned run's frame against the clean run's.
+std::array<double, kComparedCount> errors(const FrameState& clean, const FrameState& test) {
     const auto validProbeTexel = [&](size_t i) {
         const size_t probe = i / LUMINA_SP_PROBE_TEXELS;
         return probe < clean.probes.size() && probe < test.probes.size() &&
                clean.probes[probe].info.x == LUMINA_SP_PROBE_VALID &&
                test.probes[probe].info.x == LUMINA_SP_PROBE_VALID;
     };
-    const std::pair<double, const char*> errors[] = {
-        {measure::relMse(clean.hdr, test.hdr), "final HDR"},
-        {measure::relMse(clean.screenTemporal, test.screenTemporal), "screen temporal irradiance"},
-        {relMseRgb(clean.probeHistory, test.probeHistory, validProbeTexel), "screen-probe radiance history"},
-        {relMseRgb(clean.radiosity, test.radiosity), "surface-cache radiosity (indirect light)"},
-        {relMseRgb(clean.finalLighting, test.finalLighting), "surface-cache final lighting"},
-    };
-    std::pair<double, const char*> worst{0.0, "none"};
-    for (const auto& e : errors) {
-        if (!(e.first <= worst.first)) { // NaN counts as worst
-            worst = e;
-        }
-    }
-    return worst;
+    const auto radiosity = byCard(clean, clean.radiosity, test, test.radiosity);
+    const auto finalLighting = byCard(clean, clean.finalLighting, test, test.finalLighting);
+    return {measure::relMse(clean.hdr, test.hdr), measure::relMse(clean.screenTemporal, test.screenTemporal),
+            relMseRgb(radiosity.first, radiosity.second),
+            relMseRgb(finalLighting.first, finalLighting.second),
+            relMseRgb(clean.probeHistory, test.probeHistory, validProbeTexel)};
 }
 
 class PoisonStress : public GpuTest {
 protected:
     FrameHarness harness(const scene::Scene& scene, bool checkFinite) {
         return FrameHarness(device(), shaders(), scene,
-                            {.width = kSize, .height = kSize, .checkFinite = checkFinite});
+                            {.width = kSize,
+                             .height = kSize,
+                             .adjustLumen = [](gi::LumenSettings& s) { s.cache.atlasSize = kAtlasSize; },
+                             .checkFinite = checkFinite});
     }
 
     // Poisons `site` with every value in turn, one frame each, and checks the spread.
@@ -228,9 +287,8 @@ protected:
         FrameHarness clean = harness(scene, false);
         FrameHarness poisonedRun = harness(scene, true);
         gi::watchFloatBuffers(*poisonedRun.finiteCheck(), poisonedRun.renderer());
-        const uint32_t settle = clean.renderUntilConverged(kSettleFrames);
-        ASSERT_TRUE(clean.converged());
-        poisonedRun.render(settle);
+        clean.render(kWarmFrames);
+        poisonedRun.render(kWarmFrames);
         ASSERT_FALSE(poisonedRun.nonFinite()) << poisonedRun.nonFinite()->describe();
 
         for (Poison p : kPoisons) {
@@ -243,9 +301,14 @@ protected:
                 refused = true;
                 why = e.what();
             }
-            uint32_t recoveredFrom = 1;
-            std::pair<double, const char*> firstError{0.0, "none"}, lastBad{0.0, "none"};
-            for (uint32_t frame = 1; frame <= kWatchFrames; ++frame) {
+            // Per compared buffer: the frame (1 = the poisoned one) from which every watched frame
+            // is within its bound, and its relMSE in the poisoned frame and the last watched one.
+            std::array<uint32_t, kComparedCount> recoveredFrom;
+            recoveredFrom.fill(1);
+            std::array<double, kComparedCount> first{}, last{};
+            std::vector<double> hdrCurve;
+            const uint32_t watched = refused ? kRefusedWatchFrames : kWatchFrames;
+            for (uint32_t frame = 1; frame <= watched; ++frame) {
                 clean.render();
                 poisonedRun.render();
                 if (frame == 1 && !refused) {
@@ -253,25 +316,31 @@ protected:
                 }
                 ASSERT_FALSE(poisonedRun.nonFinite())
                     << "frame " << frame << " after the poison: " << poisonedRun.nonFinite()->describe();
-                const auto error = worstError(readState(device(), clean), readState(device(), poisonedRun));
+                last = errors(readState(device(), clean), readState(device(), poisonedRun));
                 if (frame == 1) {
-                    firstError = error;
+                    first = last;
                 }
-                if (!(error.first < kRecoveredRelMse)) {
-                    recoveredFrom = frame + 1;
-                    lastBad = error;
+                hdrCurve.push_back(last[0]);
+                for (size_t c = 0; c < kComparedCount; ++c) {
+                    if (!(last[c] < kCompared[c].recoveredRelMse)) { // NaN is never recovered
+                        recoveredFrom[c] = frame + 1;
+                    }
                 }
             }
-            std::printf(
-                "poison %-18s %-8s %s; relMSE in the poisoned frame %.3g (%s); within %.3g of the clean "
-                "run from frame %u%s%s\n",
-                site.name, poisonName(p), refused ? "refused" : "accepted", firstError.first,
-                firstError.second, kRecoveredRelMse, recoveredFrom,
-                recoveredFrom > 1 ? std::string(", last over it: " + std::string(lastBad.second)).c_str()
-                                  : "",
-                refused ? (" (" + why + ")").c_str() : "");
-            EXPECT_LE(recoveredFrom, kRecoveryFrames)
-                << "last over the bound: " << lastBad.second << " " << lastBad.first;
+            std::printf("poison %s %s: %s%s%s\n", site.name, poisonName(p),
+                        refused ? "refused (" : "accepted", refused ? why.c_str() : "", refused ? ")" : "");
+            for (size_t c = 0; c < kComparedCount; ++c) {
+                std::printf(
+                    "  %-42s relMSE %.3g in the poisoned frame, %.3g after %u; under %.3g from frame %u\n",
+                    kCompared[c].name, first[c], last[c], watched, kCompared[c].recoveredRelMse,
+                    recoveredFrom[c]);
+                EXPECT_LE(recoveredFrom[c], refused ? 1u : kRecoveryFrames) << kCompared[c].name;
+            }
+            std::printf("  final HDR relMSE after");
+            for (uint32_t frame = 1; frame <= hdrCurve.size(); frame *= 2) {
+                std::printf(" %u: %.3g", frame, hdrCurve[frame - 1]);
+            }
+            std::printf("\n");
             if (p != Poison::Times1e6) {
                 // A non-finite or negative light, emission or transform is an error at the API.
                 EXPECT_TRUE(refused) << "the renderer took a " << poisonName(p) << " " << site.name;
