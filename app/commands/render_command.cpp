@@ -13,6 +13,7 @@
 #include "gi/core/timing_table.h"
 #include "gi/deferred/buffer_readback.h"
 #include "gi/frame/frame_dump.h"
+#include "gi/frame/frame_finite_check.h"
 #include "gi/frame/frame_renderer.h"
 #include "gi/gpu_scene/gpu_scene.h"
 #include "gi/image/exr.h"
@@ -29,7 +30,9 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 namespace lumina::app {
@@ -235,8 +238,10 @@ int renderWith(const ParsedArgs& args) {
     // the GI passes that read nothing of the frame's raster run on the compute queue beside it.
     // By default only where the compute queue is hardware of its own: on a shared queue the split
     // costs two more submissions a frame and overlaps nothing.
+    // --check-finite scans after each pass of one list: it records every frame on one.
     const bool asyncCompute =
-        asyncMode == "on" || (asyncMode == "auto" && device->capabilities().separateComputeQueue);
+        !args.has("check-finite") &&
+        (asyncMode == "on" || (asyncMode == "auto" && device->capabilities().separateComputeQueue));
     struct InFlightFrame {
         rhi::CommandListHandle list;   // the whole frame; with async compute, its raster
         rhi::CommandListHandle async;  // with async compute: the compute queue's list
@@ -276,6 +281,13 @@ int renderWith(const ParsedArgs& args) {
             slot.asyncFence = 0;
         }
     };
+    // --check-finite: every pass's float outputs scanned after it; each frame waited for and its
+    // first non-finite write, if any, is an error naming the pass and the resource.
+    std::optional<gi::FiniteCheck> finiteCheck;
+    if (args.has("check-finite")) {
+        finiteCheck.emplace(*device);
+        gi::watchFloatBuffers(*finiteCheck, renderer);
+    }
     uint64_t lastGraphicsFence = 0;
     uint32_t asyncFrames = 0; // frames whose GI ran partly on the compute queue
     // Records frame `frameIndex` into `slot` and submits it; returns its skipped passes.
@@ -283,6 +295,9 @@ int renderWith(const ParsedArgs& args) {
         slot.list->begin();
         gi::FrameContext frame(pipelines, *slot.list, frameIndex);
         if (!asyncCompute) {
+            if (finiteCheck) {
+                finiteCheck->beginFrame(frame);
+            }
             renderer.render(frame);
             slot.list->end();
             lastGraphicsFence = slot.fence = queue.submit(*slot.list);
@@ -336,6 +351,12 @@ int renderWith(const ParsedArgs& args) {
             changes.changedLights += renderer.lastChanges().changedLights;
             changes.changedMaterials += renderer.lastChanges().changedMaterials;
         }
+        if (finiteCheck) {
+            retire(slot);
+            if (const std::optional<gi::NonFiniteWrite> bad = finiteCheck->report()) {
+                throw std::runtime_error("--check-finite: " + bad->describe());
+            }
+        }
         const auto now = std::chrono::steady_clock::now();
         if (frameIndex >= warmup) {
             wallMs.push_back(std::chrono::duration<double, std::milli>(now - lastFrameEnd).count());
@@ -359,6 +380,10 @@ int renderWith(const ParsedArgs& args) {
     // The frames still in flight, oldest first, so the table keeps frame order.
     for (uint32_t i = 0; i < inFlight; ++i) {
         retire(slots[(rendered + i) % inFlight]);
+    }
+    if (finiteCheck) {
+        std::cout << "check-finite: " << rendered << " frame(s), " << finiteCheck->checksLastFrame()
+                  << " pass outputs checked in the last; no NaN or Inf\n";
     }
     if (timings && !wallMs.empty()) {
         std::cout << "wall time: " << std::fixed << std::setprecision(3) << gi::median(wallMs)
@@ -477,13 +502,14 @@ Command renderCommand() {
     return {
         .name = "render",
         .summary = "render a scene in real time: deferred direct light plus GI (lumen)",
-        .usage = "lumina render SCENE [--technique direct|lumen|ddgi|sh-grid] [--preset low|medium|high] "
-                 "[--technique auto --error-budget E] [--out img.png] "
-                 "[--exr img.exr] [--dump-buffers DIR] [--timings] [--timings-json PATH] [--frames N] "
-                 "[--warmup N] [--frames-in-flight N] [--async-compute auto|on|off] [--exposure EV] [--size WxH] "
-                 "[--no-default-light] "
-                 "[--sky FILE.exr "
-                 "[--sky-intensity K]]",
+        .usage =
+            "lumina render SCENE [--technique direct|lumen|ddgi|sh-grid] [--preset low|medium|high] "
+            "[--technique auto --error-budget E] [--out img.png] "
+            "[--exr img.exr] [--dump-buffers DIR] [--check-finite] [--timings] [--timings-json PATH] "
+            "[--frames N] [--warmup N] [--frames-in-flight N] [--async-compute auto|on|off] [--exposure EV] "
+            "[--size WxH] [--no-default-light] "
+            "[--sky FILE.exr "
+            "[--sky-intensity K]]",
         .description =
             "Renders SCENE (a built-in name or a scene/glTF path) in real time: GBuffer, sun shadow map, "
             "point and spot light cube shadows and direct light (docs/deferred.md); with the lumen "
@@ -497,7 +523,12 @@ Command renderCommand() {
             "frame (60 with --timings). --exr writes the linear HDR radiance; --dump-buffers writes every "
             "intermediate (GBuffer, shadow maps, direct light, indirect term, every surface-cache layer, "
             "card outlines and ids, radiosity probes, voxel lighting, every screen-probe buffer) as EXR "
-            "and PNG. --timings prints the median GPU time of each pass from timestamp queries and how "
+            "and PNG. --check-finite scans, after every pass of every frame, the float textures the pass "
+            "wrote (and the screen probes' float4 buffers) with a small kernel counting NaN and Inf, and "
+            "stops at "
+            "the first frame with one: an error (exit 1) naming the first pass, in recording order, that "
+            "wrote a non-finite value and the texture or buffer (docs/gi_tests.md#poison); it waits for each "
+            "frame. --timings prints the median GPU time of each pass from timestamp queries and how "
             "often each pass was skipped and why (shadow maps and surface-cache passes run only when "
             "something they read changed). A scene with an animation (glTF channels or scripted changes, "
             "docs/scenes.md) plays it, one loop unless --frames, and only what each frame changed is "
@@ -523,6 +554,10 @@ Command renderCommand() {
               "preset's, a tenth of the scene's largest extent)"},
              {"exr", "PATH", "also write the linear HDR result as EXR"},
              {"dump-buffers", "DIR", "write every intermediate buffer into DIR"},
+             {"check-finite", "",
+              "after every pass, scan what it wrote for NaN/Inf; the first found is an error naming the pass "
+              "and the buffer (a debug mode: waits for each frame, and records it on one queue, without "
+              "--async-compute)"},
              {"timings", "", "print the GPU time per pass (direct: 60 frames unless --frames)"},
              {"timings-json", "PATH", "write the per-pass timings as JSON"},
              {"warmup", "N", "frames left out of the timings (default 0)"},

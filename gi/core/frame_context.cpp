@@ -1,5 +1,7 @@
 #include "gi/core/frame_context.h"
 
+#include "gi/core/finite_check.h"
+
 namespace lumina::gi {
 
 template <typename Self>
@@ -10,6 +12,19 @@ PassBindings<Self>::bindingSets(const std::vector<rhi::BindingLayoutHandle>& lay
         sets.push_back({layouts[space], bindings_[space]});
     }
     return sets;
+}
+
+template <typename Self>
+std::vector<rhi::BindingSetItem> PassBindings<Self>::writeBindings() const {
+    std::vector<rhi::BindingSetItem> writes;
+    for (const auto& space : bindings_) {
+        for (const rhi::BindingSetItem& item : space) {
+            if (rhi::isWriteBinding(item.type)) {
+                writes.push_back(item);
+            }
+        }
+    }
+    return writes;
 }
 
 template class PassBindings<ComputePass>;
@@ -38,6 +53,9 @@ void ComputePass::record(auto&& issue) {
     }
     issue(commands);
     commands.endTimer();
+    if (FiniteCheck* check = frame_.finiteCheck()) {
+        check->afterPass(frame_, name_, writeBindings(), {});
+    }
 }
 
 void ComputePass::dispatch(uint32_t groupsX, uint32_t groupsY, uint32_t groupsZ) {
@@ -91,6 +109,9 @@ void RasterPass::draw(const std::vector<RasterDraw>& draws, bool indexed) {
         indexed ? commands.drawIndexed(draw.args) : commands.draw(draw.args);
     }
     commands.endTimer();
+    if (FiniteCheck* check = frame_.finiteCheck()) {
+        check->afterPass(frame_, name_, writeBindings(), colors_);
+    }
 }
 
 } // namespace lumina::gi

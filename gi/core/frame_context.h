@@ -22,6 +22,8 @@
 
 namespace lumina::gi {
 
+class FiniteCheck;
+
 struct SkippedPass {
     std::string pass;
     std::string reason;
@@ -82,6 +84,8 @@ protected:
         return hasFlag(buffer.desc().usage, rhi::BufferUsage::Raw) && buffer.desc().structStride == 0;
     }
     std::vector<rhi::BindingSet> bindingSets(const std::vector<rhi::BindingLayoutHandle>& layouts) const;
+    // The bindings that write (u registers), for the finite check.
+    std::vector<rhi::BindingSetItem> writeBindings() const;
 
     SpaceBindings bindings_;
     std::vector<uint8_t> pushConstants_;
@@ -188,11 +192,17 @@ public:
     uint64_t frameIndex() const { return frameIndex_; }
     const std::vector<SkippedPass>& skipped() const { return skipped_; }
 
+    // --check-finite (gi/core/finite_check.h): every pass recorded from now on is followed by a
+    // check of the float resources it wrote. Null: none (the default).
+    void setFiniteCheck(FiniteCheck* check) { finiteCheck_ = check; }
+    FiniteCheck* finiteCheck() const { return finiteCheck_; }
+
 private:
     PipelineCache& pipelines_;
     rhi::ICommandList& commands_;
     uint64_t frameIndex_;
     std::vector<SkippedPass> skipped_;
+    FiniteCheck* finiteCheck_ = nullptr;
 };
 
 } // namespace lumina::gi

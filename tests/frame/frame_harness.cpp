@@ -21,6 +21,9 @@ gi::FrameRendererSettings rendererSettings(const scene::Scene& scene, const Fram
         if (settings.probeSpacing != 0) {
             out.lumen->probes.probeSpacing = settings.probeSpacing;
         }
+        if (settings.adjustLumen) {
+            settings.adjustLumen(*out.lumen);
+        }
     }
     if (settings.technique == gi::GiTechnique::Ddgi) {
         out.ddgi = testDdgiSettings(settings.preset, scene);
@@ -58,17 +61,24 @@ FrameHarness::FrameHarness(rhi::IDevice& device, rhi::ShaderLibrary& shaders, sc
                            const FrameHarnessSettings& settings)
     : device_(device), scene_(std::move(scene)), gpuScene_(device, scene_), pipelines_(device, shaders),
       renderer_(device, scene_, gpuScene_, rendererSettings(scene_, settings)),
-      list_(device.createCommandList()) {}
+      list_(device.createCommandList()),
+      finiteCheck_(settings.checkFinite ? std::make_unique<gi::FiniteCheck>(device) : nullptr) {}
 
 void FrameHarness::render(uint32_t count) {
     for (uint32_t i = 0; i < count; ++i) {
         list_->begin();
         gi::FrameContext frame(pipelines_, *list_, frames_++);
+        if (finiteCheck_) {
+            finiteCheck_->beginFrame(frame);
+        }
         renderer_.render(frame);
         list_->end();
         rhi::IQueue& queue = device_.queue(list_->queueType());
         queue.waitForValue(queue.submit(*list_));
         timings_.addFrame(list_->timerResults(), frame.skipped());
+        if (finiteCheck_) {
+            nonFinite_ = finiteCheck_->report();
+        }
     }
 }
 

@@ -6,6 +6,7 @@
 //   FrameHarness h(device(), shaders(), scene::loadScene("cornell_box"), {.width = 64, .height = 64});
 //   h.renderUntilConverged(48);       // the surface cache's radiosity, then 48 frames more
 //   measure::relMse(reference, h.hdr());
+#include "gi/core/finite_check.h"
 #include "gi/core/frame_context.h"
 #include "gi/core/pipeline_cache.h"
 #include "gi/core/timing_table.h"
@@ -18,6 +19,8 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
+#include <optional>
 #include <string>
 
 namespace lumina::test {
@@ -31,8 +34,13 @@ struct FrameHarnessSettings {
     // Changes to the DDGI preset's settings (the ddgi technique only): fewer probes, a lower
     // hysteresis so that a test converges sooner.
     std::function<void(gi::DdgiSettings&)> adjustDdgi = nullptr;
+    // Changes to the lumen preset's settings (the lumen technique only): a smaller atlas.
+    std::function<void(gi::LumenSettings&)> adjustLumen = nullptr;
     // Changes to the SH grid preset's settings (the sh-grid technique only).
     std::function<void(gi::ShGridSettings&)> adjustShGrid = nullptr;
+    // Runs the finite check (gi/core/finite_check.h) over every pass of every frame;
+    // nonFinite() then says what the last frame's first non-finite write was.
+    bool checkFinite = false;
 };
 
 class FrameHarness {
@@ -68,6 +76,11 @@ public:
     gi::PipelineCache& pipelines() { return pipelines_; }
     uint32_t frames() const { return frames_; }
     const gi::TimingTable& timings() const { return timings_; }
+    // The GPU scene the renderer draws (tests that poison it behind the renderer's back).
+    gi::GpuScene& gpuScene() { return gpuScene_; }
+    // With checkFinite: the finite check, and the first non-finite write of the last frame.
+    gi::FiniteCheck* finiteCheck() { return finiteCheck_.get(); }
+    const std::optional<gi::NonFiniteWrite>& nonFinite() const { return nonFinite_; }
 
 private:
     rhi::IDevice& device_;
@@ -80,6 +93,8 @@ private:
     rhi::CommandListHandle gatherList_; // likewise
     gi::TimingTable timings_;
     uint32_t frames_ = 0;
+    std::unique_ptr<gi::FiniteCheck> finiteCheck_;
+    std::optional<gi::NonFiniteWrite> nonFinite_;
 };
 
 // The lumen preset `name` for `scene` as the tests run it: the mesh SDFs built here, not read
