@@ -6,7 +6,8 @@
 //   trace:     one thread per probe (every 4x4 texels) of the listed tiles: 16 rays over the
 //              hemisphere through the global SDF, each hit reading the voxel lighting (the
 //              last update's outgoing radiance), each ray that leaves the scene the sky
-//              (common/sky_sampling.hlsli), projected to L1 SH.
+//              (common/sky_sampling.hlsli), projected to L1 SH; counts what its rays found
+//              (RadiosityRayStats).
 //   filter:    each probe averaged with its 4 neighbours on the same card and plane.
 //   integrate: one thread per texel: the filtered SH's irradiance at the texel's normal into
 //              the indirect layer, negatives clamped.
