@@ -1,5 +1,6 @@
 #include "gi/surface_cache/radiosity_pass.h"
 
+#include "rhi/transfer.h"
 #include "shaders/common/constants_shared.h"
 
 #include <glm/glm.hpp>
@@ -48,11 +49,20 @@ RadiosityPass::RadiosityPass(rhi::IDevice& device, uint32_t atlasSize, const sdf
     rhi::BufferDesc filteredDesc = desc;
     filteredDesc.debugName = "surface cache radiosity probes (filtered)";
     filtered_ = device.createBuffer(filteredDesc);
+    rayStats_ = device.createBuffer({.size = sizeof(gpu::RadiosityRayStats),
+                                     .structStride = sizeof(uint32_t),
+                                     .usage = rhi::BufferUsage::Structured | rhi::BufferUsage::Storage,
+                                     .debugName = "surface cache radiosity ray stats"});
 }
 
 void RadiosityPass::recordClear(rhi::ICommandList& commands) const {
     commands.fillBuffer(*traced_, 0);
     commands.fillBuffer(*filtered_, 0);
+    commands.fillBuffer(*rayStats_, 0);
+}
+
+gpu::RadiosityRayStats RadiosityPass::readRayStats(rhi::IDevice& device) const {
+    return rhi::readBufferAs<gpu::RadiosityRayStats>(device, *rayStats_).at(0);
 }
 
 void RadiosityPass::record(gi::FrameContext& frame, const AtlasSurfaceBindings& surfaces,
@@ -87,6 +97,7 @@ void RadiosityPass::record(gi::FrameContext& frame, const AtlasSurfaceBindings& 
         .read(11, voxels.volume())
         .read(13, sky_)
         .write(0, traced_)
+        .write(2, rayStats_)
         .dispatchThreads(tiles.threadsX(probesPerTile), tiles.threadsY(probesPerTile),
                          {LUMINA_LINEAR_GROUP_SIZE, 1});
 

@@ -44,6 +44,9 @@ public:
     const rhi::BufferHandle& probes() const { return filtered_; }
     // The probes as the last trace left them, before the spatial filter.
     const rhi::BufferHandle& tracedProbes() const { return traced_; }
+    // What the trace's rays found, summed since recordClear (RadiosityRayStats); reads it back
+    // (waits for the device).
+    gpu::RadiosityRayStats readRayStats(rhi::IDevice& device) const;
 
     // How far its rays reach (world): a change farther than this from a card does not reach it
     // in one bounce.
@@ -57,6 +60,7 @@ private:
     float filterMinCosine_ = 0.9f;
     rhi::BufferHandle traced_;   // RadiosityProbe per probe: the trace's SH
     rhi::BufferHandle filtered_; // RadiosityProbe per probe: after the spatial filter
+    rhi::BufferHandle rayStats_; // RadiosityRayStats, summed by the trace
 };
 
 } // namespace lumina::surface_cache

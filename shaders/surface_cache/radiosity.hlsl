@@ -6,7 +6,8 @@
 //   trace:     one thread per probe (every 4x4 texels) of the listed tiles: 16 rays over the
 //              hemisphere through the global SDF, each hit reading the voxel lighting (the
 //              last update's outgoing radiance), each ray that leaves the scene the sky
-//              (common/sky_sampling.hlsli), projected to L1 SH.
+//              (common/sky_sampling.hlsli), projected to L1 SH; counts what its rays found
+//              (RadiosityRayStats).
 //   filter:    each probe averaged with its 4 neighbours on the same card and plane.
 //   integrate: one thread per texel: the filtered SH's irradiance at the texel's normal into
 //              the indirect layer, negatives clamped.
@@ -31,6 +32,7 @@ StructuredBuffer<RadiosityProbe> gProbesIn : register(t12); // filter: traced; i
 Texture2D<float4> gSky : register(t13);                     // trace: latitude-longitude radiance
 RWStructuredBuffer<RadiosityProbe> gProbesOut : register(u0);
 LUMINA_UAV_FORMAT(rgba16f) RWTexture2D<float4> gIndirect : register(u1);
+RWStructuredBuffer<uint> gRayStats : register(u2); // trace: RadiosityRayStats, summed
 
 #define LUMINA_TILE_OWNER gTileOwner
 #define LUMINA_SURFACE_CARD(i) gCards[i]
@@ -140,6 +142,7 @@ float3 finiteOrZero(float3 v) {
     float4 shR = float4(0.0f, 0.0f, 0.0f, 0.0f);
     float4 shG = shR;
     float4 shB = shR;
+    uint stats[LUMINA_RADIOSITY_STAT_COUNT] = {0u, 0u, 0u, 0u, 0u, 0u};
     for (uint ray = 0u; ray < LUMINA_RADIOSITY_RAYS; ++ray) {
         float cosTheta =
             (float(ray / LUMINA_RADIOSITY_RAYS_PER_SIDE) + 0.5f) / float(LUMINA_RADIOSITY_RAYS_PER_SIDE);
@@ -152,14 +155,23 @@ float3 finiteOrZero(float3 v) {
         // in a corner) is a miss too, but it is still inside: it sees nothing rather than a sky
         // that a closed room would not show it.
         float3 radiance = float3(0.0f, 0.0f, 0.0f);
+        stats[LUMINA_RADIOSITY_STAT_RAYS] += 1u;
         if (sdfIsMiss(hit)) {
             if (hit.ids.w < params.maxSteps) {
                 radiance = skyRadiance(dir);
+                stats[LUMINA_RADIOSITY_STAT_LEFT_SCENE] += 1u;
+            } else {
+                stats[LUMINA_RADIOSITY_STAT_OUT_OF_STEPS] += 1u;
             }
         } else {
-            float3 hitNormal = sdfFacingNormal(hit.normalAndCoverage.xyz, dir, hit.positionAndT.w);
-            radiance = finiteOrZero(sampleVoxelLighting(gConstants.grid, hit.positionAndT.xyz, hitNormal,
-                                                        sdfSeenFrom(dir, hit.positionAndT.w)));
+            float3 gradient = hit.normalAndCoverage.xyz;
+            float3 hitNormal = sdfFacingNormal(gradient, dir, hit.positionAndT.w);
+            float4 seen = voxelLightingSeenSide(gConstants.grid, hit.positionAndT.xyz, hitNormal, gradient,
+                                                sdfSeenFrom(dir, hit.positionAndT.w));
+            radiance = finiteOrZero(seen.rgb);
+            stats[LUMINA_RADIOSITY_STAT_HITS] += 1u;
+            stats[LUMINA_RADIOSITY_STAT_GRADIENT_SIDE] += seen.a < 0.0f ? 1u : 0u;
+            stats[LUMINA_RADIOSITY_STAT_UNLIT_HITS] += seen.a == 0.0f ? 1u : 0u;
         }
         // Monte Carlo projection with the uniform hemisphere pdf 1 / (2 pi).
         float4 basis =
@@ -167,6 +179,12 @@ float3 finiteOrZero(float3 v) {
         shR += radiance.r * basis;
         shG += radiance.g * basis;
         shB += radiance.b * basis;
+    }
+    for (uint k = 0u; k < LUMINA_RADIOSITY_STAT_COUNT; ++k) {
+        uint ignored;
+        if (stats[k] != 0u) {
+            InterlockedAdd(gRayStats[k], stats[k], ignored);
+        }
     }
     RadiosityProbe result;
     result.r = shR;

@@ -163,6 +163,28 @@ struct RadiosityProbe {
 };
 LUMINA_STATIC_ASSERT_SIZE(RadiosityProbe, 64);
 
+// What the radiosity trace's rays found, summed over every update since the probes were cleared
+// (RadiosityPass::readRayStats): the loss of a furnace is the share of hits that read nothing.
+// The trace adds to the fields as uints at these indices.
+#define LUMINA_RADIOSITY_STAT_RAYS 0u
+#define LUMINA_RADIOSITY_STAT_LEFT_SCENE 1u
+#define LUMINA_RADIOSITY_STAT_OUT_OF_STEPS 2u
+#define LUMINA_RADIOSITY_STAT_HITS 3u
+#define LUMINA_RADIOSITY_STAT_GRADIENT_SIDE 4u
+#define LUMINA_RADIOSITY_STAT_UNLIT_HITS 5u
+#define LUMINA_RADIOSITY_STAT_COUNT 6u
+struct RadiosityRayStats {
+    uint rays;
+    uint leftScene;    // read the sky
+    uint outOfSteps;   // still inside after the step budget: read zero
+    uint hits;         // read the voxel lighting
+    uint gradientSide; // hits whose turned normal found no surface, answered by the SDF gradient's side
+    uint unlitHits;    // hits that found no surface either way: read zero
+    uint padding0;
+    uint padding1;
+};
+LUMINA_STATIC_ASSERT_SIZE(RadiosityRayStats, 32);
+
 LUMINA_GPU_NAMESPACE_END
 
 #endif
