@@ -57,13 +57,18 @@ void checkPngChunks(std::span<const uint8_t> bytes) {
 // most 256 symbols and fit in its segment. Progressive JPEGs put DHT segments between scans, so
 // the walk continues past each scan's entropy-coded data.
 void checkJpegHuffmanTables(std::span<const uint8_t> bytes) {
-    if (bytes.size() < 2 || bytes[0] != 0xFF || bytes[1] != 0xD8) {
+    // stb_image takes fill bytes (0xFF) before any marker, the start of image (SOI) included.
+    size_t offset = 0;
+    while (offset < bytes.size() && bytes[offset] == 0xFF) {
+        ++offset;
+    }
+    if (offset == 0 || offset >= bytes.size() || bytes[offset] != 0xD8) {
         return; // not a JPEG
     }
+    ++offset;
     const auto fail = [](size_t at, const std::string& what) {
         throw TextureDecodeError("JPEG Huffman table at byte " + std::to_string(at) + ": " + what);
     };
-    size_t offset = 2;
     while (offset < bytes.size()) {
         if (bytes[offset] != 0xFF) {
             ++offset; // entropy-coded data of a scan: markers are found by their 0xFF
