@@ -114,6 +114,10 @@ uint32_t FrameHarness::renderWithAsyncCompute(uint32_t count) {
             graphics.waitForQueue(compute, asyncDone);
         }
         graphics.waitForValue(graphics.submit(*gatherList_));
+        if (besideRaster) {
+            // The gather waited for it on the GPU; its timers are read once the CPU has seen it end.
+            compute.waitForValue(asyncDone);
+        }
         for (rhi::ICommandList* list :
              {list_.get(), besideRaster ? asyncList_.get() : nullptr, gatherList_.get()}) {
             if (list != nullptr) {
