@@ -41,8 +41,10 @@ export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1:suppressions=$supp/ubsan
 # The tests that run the path tracer's kernel over several samples: lavapipe compiles a copy of
 # the kernel for each new value of its per-sample constants and never frees it (lavapipe's own
 # leak: tests/sanitizers/lsan_lavapipe_jit.supp has the evidence). They run in a second pass
-# whose suppressions add lavapipe's JIT to lsan.supp's; every other test runs without it.
-jit='AnalyticLightTest|ConvergenceTest|DeterminismTest|EmitterTest|EnvironmentSkyTest|reference_cli_smoke|shard_smoke|auto_technique_smoke|device_lost_cli'
+# whose suppressions add lavapipe's JIT to lsan.supp's; every other test runs without it. The
+# render CLI's smoke and --check-finite tests join them: their DDGI and lumen frames leak the same
+# way (the same two lavapipe frames in their reports).
+jit='AnalyticLightTest|ConvergenceTest|DeterminismTest|EmitterTest|EnvironmentSkyTest|reference_cli_smoke|shard_smoke|auto_technique_smoke|device_lost_cli|render_cli_smoke|check_finite_cli'
 status=0
 ctest --test-dir build-asan --output-on-failure -j2 -L 'unit|gpu' -E "$slow|$jit" || status=$?
 cat "$supp/lsan.supp" "$supp/lsan_lavapipe_jit.supp" >build-asan/lsan_jit.supp
