@@ -9,13 +9,16 @@ candidates, size, frames and reference (tests/bench/auto_technique_smoke.cmake).
 
 The errors of the two runs are the same computation on the same reference, so they are compared
 exactly (up to float printing); their times are two measurements of the same work, and lavapipe's
-vary by tens of percent between runs on a shared machine, so "cheaper" means under half the
-chosen's matrix time.
+vary by tens of percent between runs on a shared machine, and by more under the sanitizers: in
+the sanitizer step's run of the CI rehearsal, direct low took 2.4 ms a frame in the calibration
+and 2.8 in the matrix while direct medium (the same image) took 3.9 and 1.1, a 2.5x swing. So
+"cheaper" means under a quarter of the chosen's matrix time: the check can fail on the error,
+never on timing noise.
 """
 import csv
 import sys
 
-TIME_NOISE = 2.0  # a candidate counts as cheaper when it takes less than 1/TIME_NOISE the time
+TIME_NOISE = 4.0  # a candidate counts as cheaper when it takes less than 1/TIME_NOISE the time
 
 
 def fail(message):
