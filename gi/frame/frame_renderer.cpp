@@ -270,15 +270,9 @@ void FrameRenderer::applyPendingChanges(FrameContext& frame) {
 }
 
 void FrameRenderer::render(FrameContext& frame) {
-    applyPendingChanges(frame);
-    if (!gi_) {
-        deferred_.render(frame);
-        return;
-    }
-    deferred_.recordLighting(frame);
-    gi_->record(frame, deferred_, camera_);
-    deferred_.setIndirect(gi_->indirect(), gi_->indirectScale());
-    deferred_.recordComposite(frame);
+    // One list is the split with every part in it: the passes beside the raster come right after
+    // the deferred lighting, where record() would record them, so the order is the same.
+    render(SplitFrame{frame, frame, frame});
 }
 
 bool FrameRenderer::render(const SplitFrame& frame) {
