@@ -32,7 +32,7 @@ std::string name(const gi::AutoCandidate& c) {
 std::vector<FlagSpec> withCalibrationFlags(std::vector<FlagSpec> flags) {
     for (FlagSpec flag : std::vector<FlagSpec>{
              {"calibration-size", "WxH", "auto's calibration: image size (default 64x64)"},
-             {"calibration-frames", "N", "auto's calibration: frames per candidate (default 8)"},
+             {"calibration-frames", "N", "auto's calibration: frames per candidate (default 128)"},
              {"calibration-spp", "N", "auto's calibration: samples of its reference (default 64)"}}) {
         flags.push_back(flag);
     }

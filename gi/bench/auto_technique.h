@@ -29,7 +29,11 @@ struct AutoCandidate {
 struct CalibrationRequest {
     uint32_t width = 64;
     uint32_t height = 64;
-    uint32_t frames = 8;
+    // As many frames as the bench matrix runs (scripts/gpu/bench_matrix.sh): the SH grid settles
+    // after 24-48 frames and DDGI's probe history later, so after 8 frames (the first default)
+    // only lumen had converged and auto chose it on every scene of the H200 matrix, where the SH
+    // grid met the same budget at a tenth of the time (docs/measurement.md).
+    uint32_t frames = 128;
     uint32_t referenceSpp = 64;
     std::vector<std::string> techniques{"direct", "lumen", "ddgi", "sh-grid"};
     std::vector<std::string> presets{"low", "medium", "high"};

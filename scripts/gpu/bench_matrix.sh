@@ -8,6 +8,14 @@
 # shards, one call each, then merge and plot here:
 #   LUMINA_SHARD=0/8 scripts/gpu/bench_matrix.sh     # ... up to 7/8, each writes $OUT/matrix/SIZE/shard_I
 #   scripts/gpu/bench_matrix.sh merge DIR...          # DIR: the calls' matrix folders; merges and plots
+# Or one bench per scene, as many scenes as fit in one call (a shard of scenes keeps each scene's
+# reference in one call; --shard splits a scene's techniques across calls, each rendering the
+# reference again):
+#   LUMINA_MATRIX_PER_SCENE=1 LUMINA_MATRIX_DEADLINE_S=540 LUMINA_MATRIX_SCENES=a,b scripts/gpu/bench_matrix.sh
+#     writes $OUT/matrix/SIZE/SCENE/ per scene finished, and starts no scene after the deadline
+#     (LUMINA_MATRIX_ARGS: more bench flags for each, e.g. "--check-auto 0.05"), and that folder
+#     as $OUT/matrix_SIZE_SCENE.tar;
+#   scripts/gpu/bench_matrix.sh plot CSV...           # plots the per-scene CSVs of several calls
 # Without LUMINA_SHARD it runs everything in one go and plots. On lavapipe, tiny:
 #   LUMINA=build/app/lumina LUMINA_MATRIX_SCENES=cornell_box_point LUMINA_MATRIX_SIZES=16x16 \
 #   LUMINA_MATRIX_TECHNIQUES=direct,pathtracer LUMINA_MATRIX_FRAMES=2 LUMINA_MATRIX_SPP=8 \
@@ -34,6 +42,12 @@ plot() { # plot OUT_DIR CSV...
   fi
 }
 
+if [ "${1:-}" = plot ]; then
+  shift
+  plot "$out/matrix/pareto" "$@"
+  exit
+fi
+
 if [ "${1:-}" = merge ]; then
   shift
   csvs=()
@@ -47,6 +61,36 @@ if [ "${1:-}" = merge ]; then
   exit
 fi
 
+bench() { # bench DIR SIZE SCENES [ARG...]
+  local dir=$1 size=$2 scenes=$3
+  shift 3
+  mkdir -p "$dir"
+  $LUMINA bench --scenes "$scenes" --techniques "$techniques" --presets "${LUMINA_MATRIX_PRESETS:-low,medium,high}" \
+    --pt-budgets 1,4,16 --size "$size" --frames "${LUMINA_MATRIX_FRAMES:-128}" \
+    --reference-spp "${LUMINA_MATRIX_SPP:-4096}" --change-frames "${LUMINA_MATRIX_CHANGE_FRAMES:-32}" \
+    --no-plot "$@" --out "$dir" 2>&1 | tr '\r' '\n' | grep -v '^\[' | tee "$dir/bench.log"
+  return "${PIPESTATUS[0]}"
+}
+
+if [ -n "${LUMINA_MATRIX_PER_SCENE:-}" ]; then
+  start=$(date +%s)
+  for scene in ${scenes//,/ }; do
+    for size in $sizes; do
+      if [ -n "${LUMINA_MATRIX_DEADLINE_S:-}" ] && [ $(( $(date +%s) - start )) -ge "$LUMINA_MATRIX_DEADLINE_S" ]; then
+        echo "bench_matrix: deadline reached before $scene at $size"
+        exit 0
+      fi
+      t0=$(date +%s)
+      # shellcheck disable=SC2086 # LUMINA_MATRIX_ARGS: extra bench flags, e.g. "--check-auto 0.05"
+      bench "$out/matrix/$size/$scene" "$size" "$scene" ${LUMINA_MATRIX_ARGS:-} || echo "bench_matrix: $scene at $size failed"
+      echo "bench_matrix: $scene at $size took $(( $(date +%s) - t0 )) s"
+      # The device tool brings back files at most two folders deep: one tar per scene and size.
+      tar -C "$out/matrix" -cf "$out/matrix_${size}_$scene.tar" "$size/$scene"
+    done
+  done
+  exit 0
+fi
+
 csvs=()
 for size in $sizes; do
   dir=$out/matrix/$size
@@ -55,12 +99,7 @@ for size in $sizes; do
     shard_args=(--shard "$LUMINA_SHARD")
     dir=$dir/shard_${LUMINA_SHARD%%/*}
   fi
-  mkdir -p "$dir"
-  $LUMINA bench --scenes "$scenes" --techniques "$techniques" --presets "${LUMINA_MATRIX_PRESETS:-low,medium,high}" \
-    --pt-budgets 1,4,16 --size "$size" --frames "${LUMINA_MATRIX_FRAMES:-128}" \
-    --reference-spp "${LUMINA_MATRIX_SPP:-4096}" --change-frames "${LUMINA_MATRIX_CHANGE_FRAMES:-32}" \
-    --no-plot "${shard_args[@]}" --out "$dir" 2>&1 | tr '\r' '\n' | grep -v '^\[' | tee "$dir/bench.log"
-  [ "${PIPESTATUS[0]}" = 0 ] || exit 1
+  bench "$dir" "$size" "$scenes" "${shard_args[@]}" || exit 1
   csvs+=("$dir/bench.csv")
 done
 [ -z "${LUMINA_SHARD:-}" ] && plot "$out/matrix/pareto" "${csvs[@]}"
