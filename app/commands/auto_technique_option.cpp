@@ -51,6 +51,15 @@ std::vector<FlagSpec> withAutoTechniqueFlags(std::vector<FlagSpec> flags) {
     return withCalibrationFlags(std::move(flags));
 }
 
+void requireAutoForAutoFlags(const ParsedArgs& args) {
+    for (const char* flag : {"error-budget", "auto-techniques", "auto-presets", "calibration-size",
+                             "calibration-frames", "calibration-spp"}) {
+        if (args.has(flag)) {
+            throw UsageError(std::string("--") + flag + " goes with --technique auto");
+        }
+    }
+}
+
 gi::CalibrationRequest calibrationRequest(const ParsedArgs& args) {
     gi::CalibrationRequest request;
     if (args.has("calibration-size")) {

@@ -17,6 +17,9 @@ std::vector<FlagSpec> withAutoTechniqueFlags(std::vector<FlagSpec> flags);
 // The calibration the flags ask for; UsageError for a bad value.
 gi::CalibrationRequest calibrationRequest(const ParsedArgs& args);
 
+// UsageError when a flag of --technique auto is given without it.
+void requireAutoForAutoFlags(const ParsedArgs& args);
+
 // --error-budget, required and positive; UsageError otherwise.
 double errorBudget(const ParsedArgs& args);
 
@@ -24,8 +27,8 @@ double errorBudget(const ParsedArgs& args);
 void printCalibration(const gi::Calibration& calibration, const gi::CalibrationRequest& request,
                       double budget, std::optional<size_t> choice);
 
-// For `render --technique auto`: calibrates the scene (or reuses its table), prints the table and
-// the choice, and returns the arguments with --technique and --preset set to it. Exit 1 (a
+// For `render --technique auto` and the viewer's: calibrates the scene (or reuses its table), prints the
+// table and the choice, and returns the arguments with --technique and --preset set to it. Exit 1 (a
 // runtime_error) when no candidate is under the budget.
 ParsedArgs chooseAutoTechnique(const ParsedArgs& args);
 

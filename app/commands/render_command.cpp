@@ -487,12 +487,7 @@ int runRender(const ParsedArgs& args) {
     if (args.get("technique") == "auto") {
         return renderWith(chooseAutoTechnique(args));
     }
-    for (const char* flag : {"error-budget", "auto-techniques", "auto-presets", "calibration-size",
-                             "calibration-frames", "calibration-spp"}) {
-        if (args.has(flag)) {
-            throw UsageError(std::string("--") + flag + " goes with --technique auto");
-        }
-    }
+    requireAutoForAutoFlags(args);
     return renderWith(args);
 }
 

@@ -1,6 +1,7 @@
 // lumina-viewer: the interactive viewer. `lumina-viewer --help` lists the flags and the keys;
 // docs/viewer.md describes it.
 #include "app/command.h"
+#include "app/commands/auto_technique_option.h"
 #include "app/viewer/viewer.h"
 #include "app/viewer/viewer_options.h"
 #include "app/viewer/viewer_settings.h"
@@ -29,6 +30,13 @@ int run(const std::vector<std::string>& args) {
             app::viewer::applySavedSettings(*saved, options);
             std::cout << "settings: read from " << settingsPath->string() << '\n';
         }
+    }
+    if (options.autoTechnique) {
+        // Calibrated (or its cached table reused) on a device of its own, closed before the
+        // window's opens; the choice replaces any saved technique and preset.
+        const app::ParsedArgs chosen = app::chooseAutoTechnique(*options.autoTechnique);
+        options.technique = chosen.get("technique");
+        options.preset = chosen.get("preset");
     }
     scene::Scene scene = scene::loadScene(options.scene);
     if (options.common.size) {

@@ -1,5 +1,7 @@
 #include "app/viewer/viewer_options.h"
 
+#include "app/commands/auto_technique_option.h"
+
 #include <algorithm>
 #include <iomanip>
 #include <iostream>
@@ -13,9 +15,11 @@ namespace {
 constexpr std::string_view kCommonUsed[] = {"help", "api", "device", "size", "frames", "validation"};
 
 const std::vector<FlagSpec>& viewerFlags() {
-    static const std::vector<FlagSpec> flags = {
+    static const std::vector<FlagSpec> flags = withAutoTechniqueFlags({
         {"technique", "NAME",
-         "GI technique to start with: direct, lumen, ddgi or sh-grid (default: the scene's, else lumen)"},
+         "GI technique to start with: direct, lumen, ddgi or sh-grid (default: the scene's, else lumen), or "
+         "auto with --error-budget E: the cheapest technique and preset whose calibrated relMSE on this "
+         "scene is at most E (docs/measurement.md), chosen before the window opens"},
         {"preset", "NAME",
          "quality preset to start with: low, medium or high (default: the scene's, else medium)"},
         {"exposure", "EV", "exposure in stops before the tonemap (default 0)"},
@@ -39,7 +43,7 @@ const std::vector<FlagSpec>& viewerFlags() {
         {"test-hot-reload", "DIR",
          "edit a copy of the kernels under DIR while running and check each edit is reloaded, and a "
          "syntax error reported with the old kernel kept; exit 0 when both hold (tests)"},
-    };
+    });
     return flags;
 }
 
@@ -149,6 +153,11 @@ ViewerOptions parseViewerOptions(const std::vector<std::string>& rawArgs) {
     options.scene = parsed.positional.front();
     options.common = parsed.common;
     options.technique = parsed.get("technique");
+    if (options.technique == "auto") {
+        options.autoTechnique = parsed;
+    } else {
+        requireAutoForAutoFlags(parsed);
+    }
     options.preset = parsed.get("preset");
     options.exposureEv = static_cast<float>(parsed.getDouble("exposure", 0.0));
     options.exposureSet = parsed.has("exposure");

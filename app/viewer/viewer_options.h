@@ -15,8 +15,10 @@ namespace lumina::app::viewer {
 struct ViewerOptions {
     std::string scene;
     CommonOptions common;  // --api, --device, --size (render and window size), --frames, --validation
-    std::string technique; // empty: the scene's, else lumen
-    std::string preset;    // empty: the scene's, else medium
+    std::string technique; // empty: the scene's, else lumen; "auto" until main() chooses
+    // --technique auto: the flags its calibration reads (chooseAutoTechnique, app/commands/).
+    std::optional<ParsedArgs> autoTechnique;
+    std::string preset; // empty: the scene's, else medium
     float exposureEv = 0.0f;
     bool exposureSet = false; // --exposure given: saved settings do not replace it
     bool vsync = true;

@@ -5,19 +5,23 @@
 // frame after. A clean run renders the same frames in lockstep. Every frame:
 //   - the finite check (gi/core/finite_check.h) finds no NaN or Inf in anything any pass wrote,
 //     the screen-probe radiance history included;
-//   - the final HDR image and every history lumen keeps (screen-probe radiance history, the screen
-//     temporal irradiance, the surface cache's radiosity and final lighting) are compared with the
-//     clean run's by relMSE (the surface cache card by card), and from kRecoveryFrames on each is
-//     within its bound (kCompared). A refused value must leave every frame identical.
+//   - the final HDR image and every history the technique keeps are compared with the clean run's
+//     by relMSE (the surface cache card by card), and from kRecoveryFrames on each is within its
+//     bound (kLumenCompared, kDdgiCompared). A refused value must leave every frame identical.
+// Lumen's histories: the screen-probe radiance history, the screen temporal irradiance, the surface
+// cache's radiosity and final lighting. DDGI's: the probes' irradiance and distance atlases, their
+// relocation offsets, and the same surface cache, which its rays read.
 // Site by site (one test each), value after value in one run: each value starts from the state the
 // previous one recovered to. A material texel is no site of its own: material textures are RGBA8
 // (scene::Texture::rgba8), which holds no NaN, Inf or negative value, and a float sky is refused at
 // load (gi/scene/sky_environment.cpp).
+#include "gi/ddgi/ddgi_gi.h"
 #include "gi/frame/frame_finite_check.h"
 #include "gi/measure/metrics.h"
 #include "gi/scene/scene_loader.h"
 #include "gi/surface_cache/surface_cache.h"
 #include "rhi/transfer.h"
+#include "shaders/ddgi/ddgi_shared.h"
 #include "shaders/screen_probes/screen_probe_shared.h"
 #include "tests/frame/frame_harness.h"
 #include "tests/rhi/gpu_test_fixture.h"
@@ -159,16 +163,17 @@ PoisonSite vertexPosition() {
             }};
 }
 
-// relMSE over the rgb of float4 entries, skipping those `include` leaves out.
+// relMSE over the first `channels` components of float4 entries (rgb by default), skipping those
+// `include` leaves out.
 double relMseRgb(const std::vector<glm::vec4>& reference, const std::vector<glm::vec4>& test,
-                 const std::function<bool(size_t)>& include = nullptr) {
+                 const std::function<bool(size_t)>& include = nullptr, int channels = 3) {
     double sum = 0.0;
     size_t n = 0;
     for (size_t i = 0; i < reference.size() && i < test.size(); ++i) {
         if (include && !include(i)) {
             continue;
         }
-        for (int c = 0; c < 3; ++c) {
+        for (int c = 0; c < channels; ++c) {
             const double r = reference[i][c], x = test[i][c];
             sum += (x - r) * (x - r) / (r * r + 0.01);
             ++n;
@@ -180,9 +185,15 @@ double relMseRgb(const std::vector<glm::vec4>& reference, const std::vector<glm:
 // The image and the histories of one frame, as the comparison needs them.
 struct FrameState {
     image::Image hdr;
+    // lumen
     image::Image screenTemporal;
     std::vector<glm::vec4> probeHistory;
     std::vector<gpu::ScreenProbe> probes;
+    // DDGI
+    std::vector<glm::vec4> ddgiIrradiance; // decoded irradiance E per atlas texel
+    std::vector<glm::vec4> ddgiDistance;   // mean distance and its square per atlas texel
+    std::vector<glm::vec4> ddgiOffsets;    // each probe's relocation offset, in units of its spacing
+    // the surface cache (both)
     std::vector<glm::vec4> radiosity;
     std::vector<glm::vec4> finalLighting;
     std::vector<glm::uvec4> cardRects; // each card's atlas rectangle: x, y, width, height
@@ -197,20 +208,58 @@ std::vector<glm::uvec4> cardRects(const surface_cache::SurfaceCache& cache) {
     return rects;
 }
 
-FrameState readState(rhi::IDevice& device, FrameHarness& h) {
-    const gi::ScreenProbeGather& gather = h.lumen().screenProbes();
-    const gi::ScreenProbeResources& r = gather.resources();
-    const surface_cache::SurfaceCache& cache = h.lumen().surfaceCache();
-    return {.hdr = h.hdr(),
-            .screenTemporal = rgbOnly(h.read(gather.irradiance())),
-            .probeHistory = rhi::readBufferAs<glm::vec4>(device, *r.history[gather.current()]),
-            .probes = rhi::readBufferAs<gpu::ScreenProbe>(device, *r.probes[gather.current()]),
-            .radiosity = cache.readLayer(surface_cache::AtlasLayer::IndirectLight),
-            .finalLighting = cache.readLayer(surface_cache::AtlasLayer::FinalLighting),
-            .cardRects = cardRects(cache),
-            .atlasSize = cache.atlas().size()};
+void readSurfaceCache(const surface_cache::SurfaceCache& cache, FrameState& state) {
+    state.radiosity = cache.readLayer(surface_cache::AtlasLayer::IndirectLight);
+    state.finalLighting = cache.readLayer(surface_cache::AtlasLayer::FinalLighting);
+    state.cardRects = cardRects(cache);
+    state.atlasSize = cache.atlas().size();
 }
 
+// Up to four channels of an image (in storage order) per pixel, `decode` applied to each.
+std::vector<glm::vec4> texels(const image::Image& image, float (*decode)(float) = nullptr) {
+    std::vector<glm::vec4> out(image.pixelCount(), glm::vec4(0.0f));
+    const std::vector<std::string> names = image.channelNames();
+    for (size_t c = 0; c < names.size() && c < 4; ++c) {
+        const std::span<const float> plane = image.channel(names[c]);
+        for (size_t i = 0; i < plane.size(); ++i) {
+            out[i][int(c)] = decode ? decode(plane[i]) : plane[i];
+        }
+    }
+    return out;
+}
+
+float decodeIrradiance(float stored) {
+    return gpu::ddgiDecodeIrradiance(stored);
+}
+
+FrameState readLumenState(rhi::IDevice& device, FrameHarness& h) {
+    const gi::ScreenProbeGather& gather = h.lumen().screenProbes();
+    const gi::ScreenProbeResources& r = gather.resources();
+    FrameState state;
+    state.hdr = h.hdr();
+    state.screenTemporal = rgbOnly(h.read(gather.irradiance()));
+    state.probeHistory = rhi::readBufferAs<glm::vec4>(device, *r.history[gather.current()]);
+    state.probes = rhi::readBufferAs<gpu::ScreenProbe>(device, *r.probes[gather.current()]);
+    readSurfaceCache(h.lumen().surfaceCache(), state);
+    return state;
+}
+
+FrameState readDdgiState(rhi::IDevice& device, FrameHarness& h) {
+    const gi::DdgiGi& ddgi = h.ddgi();
+    const gi::DdgiResources& r = ddgi.resources();
+    FrameState state;
+    state.hdr = h.hdr();
+    state.ddgiIrradiance = texels(h.read(r.irradiance), decodeIrradiance);
+    state.ddgiDistance = texels(h.read(r.distance));
+    // One volume (the box's fitted one): offsets in cells, so that relMSE's 0.01 floor is a
+    // tenth of a cell.
+    const glm::vec3 spacing = ddgi.volumes().at(0).spacing;
+    for (const gpu::DdgiProbe& probe : rhi::readBufferAs<gpu::DdgiProbe>(device, *r.probes)) {
+        state.ddgiOffsets.push_back(glm::vec4(glm::vec3(probe.offsetAndState) / spacing, 0.0f));
+    }
+    readSurfaceCache(ddgi.surfaceCache(), state);
+    return state;
+}
 // An atlas layer card by card: the texels of each card that has a rectangle of the same size in
 // both runs, in card order. A card the scale poison made huge comes back at another place in the
 // atlas (the allocator is not undone), so the atlas is not compared texel for texel.
@@ -239,60 +288,98 @@ struct Compared {
     const char* name;
     double recoveredRelMse;
 };
-// The image, the screen temporal filter and the surface cache's final lighting: kRecoveredRelMse.
-// The probes' radiance history and the radiosity are noisy estimates compared texel by texel, and
-// two runs that once diverged keep different, equally valid noise: measured, the probe history of
-// a run that recovered wanders between relMSE 0.0076 and 0.011 of the clean run's from frame 64 to
-// 160 while its image is within 0.003, and the radiosity of the cards the scale poison re-placed is
-// 0.010 off after 96 frames while their final lighting is within 0.0026. Their bound is that noise
-// floor with margin.
-constexpr Compared kCompared[] = {
+// lumen: the image, the screen temporal filter and the surface cache's final lighting within
+// kRecoveredRelMse. The probes' radiance history and the radiosity are noisy estimates compared
+// texel by texel, and two runs that once diverged keep different, equally valid noise: measured,
+// the probe history of a run that recovered wanders between relMSE 0.0076 and 0.011 of the clean
+// run's from frame 64 to 160 while its image is within 0.003, and the radiosity of the cards the
+// scale poison re-placed is 0.010 off after 96 frames while their final lighting is within 0.0026.
+// Their bound is that noise floor with margin.
+const std::vector<Compared> kLumenCompared = {
     {"final HDR", kRecoveredRelMse},
     {"screen temporal irradiance", kRecoveredRelMse},
     {"surface-cache radiosity (indirect light)", 0.03},
     {"surface-cache final lighting", kRecoveredRelMse},
     {"screen-probe radiance history", 0.03},
 };
-constexpr size_t kComparedCount = std::size(kCompared);
+// DDGI: the probes' irradiance (their history: each update keeps `hysteresis` of it), their
+// distances and relocation offsets within kRecoveredRelMse; the surface cache as for lumen.
+const std::vector<Compared> kDdgiCompared = {
+    {"final HDR", kRecoveredRelMse},
+    {"DDGI probe irradiance", kRecoveredRelMse},
+    {"DDGI probe distance", kRecoveredRelMse},
+    {"DDGI probe relocation offset", kRecoveredRelMse},
+    {"surface-cache radiosity (indirect light)", 0.03},
+    {"surface-cache final lighting", kRecoveredRelMse},
+};
 
-// The relMSE of each of kCompared, the poisoned run's frame against the clean run's.
-std::array<double, kComparedCount> errors(const FrameState& clean, const FrameState& test) {
+const std::vector<Compared>& compared(gi::GiTechnique technique) {
+    return technique == gi::GiTechnique::Ddgi ? kDdgiCompared : kLumenCompared;
+}
+
+// The relMSE of each of compared(technique), the poisoned run's frame against the clean run's.
+std::vector<double> errors(gi::GiTechnique technique, const FrameState& clean, const FrameState& test) {
+    const auto radiosity = byCard(clean, clean.radiosity, test, test.radiosity);
+    const auto finalLighting = byCard(clean, clean.finalLighting, test, test.finalLighting);
+    const double radiosityError = relMseRgb(radiosity.first, radiosity.second);
+    const double finalLightingError = relMseRgb(finalLighting.first, finalLighting.second);
+    if (technique == gi::GiTechnique::Ddgi) {
+        return {measure::relMse(clean.hdr, test.hdr),
+                relMseRgb(clean.ddgiIrradiance, test.ddgiIrradiance),
+                relMseRgb(clean.ddgiDistance, test.ddgiDistance, nullptr, 2),
+                relMseRgb(clean.ddgiOffsets, test.ddgiOffsets),
+                radiosityError,
+                finalLightingError};
+    }
     const auto validProbeTexel = [&](size_t i) {
         const size_t probe = i / LUMINA_SP_PROBE_TEXELS;
         return probe < clean.probes.size() && probe < test.probes.size() &&
                clean.probes[probe].info.x == LUMINA_SP_PROBE_VALID &&
                test.probes[probe].info.x == LUMINA_SP_PROBE_VALID;
     };
-    const auto radiosity = byCard(clean, clean.radiosity, test, test.radiosity);
-    const auto finalLighting = byCard(clean, clean.finalLighting, test, test.finalLighting);
     return {measure::relMse(clean.hdr, test.hdr), measure::relMse(clean.screenTemporal, test.screenTemporal),
-            relMseRgb(radiosity.first, radiosity.second),
-            relMseRgb(finalLighting.first, finalLighting.second),
+            radiosityError, finalLightingError,
             relMseRgb(clean.probeHistory, test.probeHistory, validProbeTexel)};
+}
+
+// DDGI as the DDGI tests run it (tests/ddgi/ddgi_gpu_test.cpp): the low preset's probes with the
+// hysteresis lowered to 0.9, so that both runs' probes have forgotten their start by the poison.
+void testDdgi(gi::DdgiSettings& s) {
+    s.hysteresis = 0.9f;
+    s.probeCounts = glm::uvec3(6);
+    s.cache.atlasSize = kAtlasSize;
 }
 
 class PoisonStress : public GpuTest {
 protected:
-    FrameHarness harness(const scene::Scene& scene, bool checkFinite) {
+    FrameHarness harness(const scene::Scene& scene, gi::GiTechnique technique, bool checkFinite) {
         return FrameHarness(device(), shaders(), scene,
                             {.width = kSize,
                              .height = kSize,
+                             .technique = technique,
+                             .adjustDdgi = testDdgi,
                              .adjustLumen = [](gi::LumenSettings& s) { s.cache.atlasSize = kAtlasSize; },
                              .checkFinite = checkFinite});
     }
 
+    static FrameState readState(rhi::IDevice& device, gi::GiTechnique technique, FrameHarness& h) {
+        return technique == gi::GiTechnique::Ddgi ? readDdgiState(device, h) : readLumenState(device, h);
+    }
+
     // Poisons `site` with every value in turn, one frame each, and checks the spread.
-    void runSite(const PoisonSite& site) {
+    void runSite(const PoisonSite& site, gi::GiTechnique technique = gi::GiTechnique::Lumen) {
         const scene::Scene scene = poisonScene();
-        FrameHarness clean = harness(scene, false);
-        FrameHarness poisonedRun = harness(scene, true);
+        const std::vector<Compared>& watch = compared(technique);
+        FrameHarness clean = harness(scene, technique, false);
+        FrameHarness poisonedRun = harness(scene, technique, true);
         gi::watchFloatBuffers(*poisonedRun.finiteCheck(), poisonedRun.renderer());
         clean.render(kWarmFrames);
         poisonedRun.render(kWarmFrames);
         ASSERT_FALSE(poisonedRun.nonFinite()) << poisonedRun.nonFinite()->describe();
 
         for (Poison p : kPoisons) {
-            SCOPED_TRACE(std::string(site.name) + " " + poisonName(p));
+            SCOPED_TRACE(std::string(site.name) + " " + poisonName(p) + " (" +
+                         std::string(gi::giTechniqueName(technique)) + ")");
             bool refused = false;
             std::string why;
             try {
@@ -303,9 +390,8 @@ protected:
             }
             // Per compared buffer: the frame (1 = the poisoned one) from which every watched frame
             // is within its bound, and its relMSE in the poisoned frame and the last watched one.
-            std::array<uint32_t, kComparedCount> recoveredFrom;
-            recoveredFrom.fill(1);
-            std::array<double, kComparedCount> first{}, last{};
+            std::vector<uint32_t> recoveredFrom(watch.size(), 1);
+            std::vector<double> first, last;
             std::vector<double> hdrCurve;
             const uint32_t watched = refused ? kRefusedWatchFrames : kWatchFrames;
             for (uint32_t frame = 1; frame <= watched; ++frame) {
@@ -316,25 +402,26 @@ protected:
                 }
                 ASSERT_FALSE(poisonedRun.nonFinite())
                     << "frame " << frame << " after the poison: " << poisonedRun.nonFinite()->describe();
-                last = errors(readState(device(), clean), readState(device(), poisonedRun));
+                last = errors(technique, readState(device(), technique, clean),
+                              readState(device(), technique, poisonedRun));
                 if (frame == 1) {
                     first = last;
                 }
                 hdrCurve.push_back(last[0]);
-                for (size_t c = 0; c < kComparedCount; ++c) {
-                    if (!(last[c] < kCompared[c].recoveredRelMse)) { // NaN is never recovered
+                for (size_t c = 0; c < watch.size(); ++c) {
+                    if (!(last[c] < watch[c].recoveredRelMse)) { // NaN is never recovered
                         recoveredFrom[c] = frame + 1;
                     }
                 }
             }
-            std::printf("poison %s %s: %s%s%s\n", site.name, poisonName(p),
-                        refused ? "refused (" : "accepted", refused ? why.c_str() : "", refused ? ")" : "");
-            for (size_t c = 0; c < kComparedCount; ++c) {
+            std::printf("poison %s %s (%s): %s%s%s\n", site.name, poisonName(p),
+                        gi::giTechniqueName(technique), refused ? "refused (" : "accepted",
+                        refused ? why.c_str() : "", refused ? ")" : "");
+            for (size_t c = 0; c < watch.size(); ++c) {
                 std::printf(
                     "  %-42s relMSE %.3g in the poisoned frame, %.3g after %u; under %.3g from frame %u\n",
-                    kCompared[c].name, first[c], last[c], watched, kCompared[c].recoveredRelMse,
-                    recoveredFrom[c]);
-                EXPECT_LE(recoveredFrom[c], refused ? 1u : kRecoveryFrames) << kCompared[c].name;
+                    watch[c].name, first[c], last[c], watched, watch[c].recoveredRelMse, recoveredFrom[c]);
+                EXPECT_LE(recoveredFrom[c], refused ? 1u : kRecoveryFrames) << watch[c].name;
             }
             std::printf("  final HDR relMSE after");
             for (uint32_t frame = 1; frame <= hdrCurve.size(); frame *= 2) {
@@ -362,6 +449,22 @@ TEST_P(PoisonStress, EmissiveStrengthPoisonNeverSpreads) {
 TEST_P(PoisonStress, VertexPositionPoisonNeverSpreads) {
     LUMINA_REQUIRE_KERNELS();
     runSite(vertexPosition());
+}
+
+// DDGI's probes are a history of their own (the "DDGI when it exists"): the same sites.
+TEST_P(PoisonStress, DdgiLightIntensityPoisonNeverSpreads) {
+    LUMINA_REQUIRE_KERNELS();
+    runSite(lightIntensity(), gi::GiTechnique::Ddgi);
+}
+
+TEST_P(PoisonStress, DdgiEmissiveStrengthPoisonNeverSpreads) {
+    LUMINA_REQUIRE_KERNELS();
+    runSite(emissiveStrength(), gi::GiTechnique::Ddgi);
+}
+
+TEST_P(PoisonStress, DdgiVertexPositionPoisonNeverSpreads) {
+    LUMINA_REQUIRE_KERNELS();
+    runSite(vertexPosition(), gi::GiTechnique::Ddgi);
 }
 
 LUMINA_INSTANTIATE_GPU_TEST(PoisonStress);

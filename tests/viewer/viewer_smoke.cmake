@@ -43,6 +43,23 @@ expect_match(hot-reload-test-without-hot-reload "${ERR}" "--test-hot-reload .*ca
 viewer(2 no-such-view cornell_box --size 16x16 --technique direct --view "sdf: global SDF slice" --frames 3)
 expect_match(no-such-view "${ERR}" "--view 'sdf: global SDF slice': no such view for this technique")
 
+# --technique auto (docs/measurement.md): the calibration lumina render runs, before the window
+# opens. A budget every candidate meets picks the cheapest: direct (a frame) over the SH grid (its
+# bake), and the viewer starts with it. The flags of auto without it, and auto without a budget,
+# are usage errors.
+set(ENV{LUMINA_CACHE_DIR} "${WORK}/cache")
+set(auto --technique auto --auto-techniques direct,sh-grid --auto-presets low --calibration-size 16x16
+    --calibration-frames 4 --calibration-spp 16)
+viewer(0 auto cornell_box --size 16x16 ${auto} --error-budget 10 --frames 3 --validation)
+expect_match(auto "${OUT}" "auto: chose direct low: relMSE [0-9.e-]+ <= 10")
+expect_match(auto "${OUT}" "technique: direct, preset low")
+viewer(2 auto-flag-without-auto cornell_box --error-budget 0.1)
+expect_match(auto-flag-without-auto "${ERR}" "--error-budget goes with --technique auto")
+viewer(2 auto-without-budget cornell_box --technique auto --frames 1)
+expect_match(auto-without-budget "${ERR}" "needs --error-budget")
+viewer(1 auto-none-meets cornell_box --size 16x16 ${auto} --error-budget 1e-9 --frames 1)
+expect_match(auto-none-meets "${ERR}" "no candidate has relMSE <= 1e-09")
+
 viewer(0 render cornell_box --size ${SIZE} --validation --test-resize --screenshot-after ${FRAMES}
        "${WORK}/viewer.exr")
 expect_match(render "${OUT}" "wrote .*viewer.exr")
