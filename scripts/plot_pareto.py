@@ -35,15 +35,16 @@ def pareto_front(points):
 
 
 def read_points(paths):
-    points, first = [], None
+    points, first, first_of_scene = [], None, {}
     for path in paths:
         with open(path, newline="") as f:
             for r in csv.DictReader(f):
                 first = first or r
+                first_of_scene.setdefault(r["scene"], r)
                 points.append({"scene": r["scene"], "technique": r["technique"], "preset": r["preset"],
                                "size": f"{r['width']}x{r['height']}", "ms": float(r["frame_ms"]),
                                "relmse": max(float(r["relmse_converged"]), 1e-12)})
-    return points, first
+    return points, first, first_of_scene
 
 
 def plot_scene(scene, points, first, path):
@@ -90,7 +91,7 @@ def main(argv):
         print(__doc__.strip(), file=sys.stderr)
         return 2
     out, paths = argv[1], argv[2:]
-    points, first = read_points(paths)
+    points, first, first_of_scene = read_points(paths)
     if not points:
         print(f"plot_pareto: {', '.join(paths)} hold no runs", file=sys.stderr)
         return 1
@@ -103,7 +104,8 @@ def main(argv):
         writer.writerow(["scene", "technique", "preset", "size", "frame_ms", "relmse_converged"])
         for scene, scene_points in by_scene.items():
             path = os.path.join(out, f"pareto_{scene}.png")
-            for p in plot_scene(scene, scene_points, first, path):
+            # The scene's own run names its device and commit (several calls may have made the CSVs).
+            for p in plot_scene(scene, scene_points, first_of_scene.get(scene, first), path):
                 writer.writerow([scene, p["technique"], p["preset"], p["size"], p["ms"], p["relmse"]])
             print(f"plot_pareto: wrote {path}")
     return 0
