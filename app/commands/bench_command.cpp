@@ -15,6 +15,7 @@
 #include "gi/bench/bench_shards.h"
 #include "gi/bench/change_response.h"
 #include "gi/bench/reference_cache.h"
+#include "gi/bench/skip_check.h"
 #include "gi/bench/technique_runs.h"
 #include "gi/core/build_info.h"
 #include "gi/core/pipeline_cache.h"
@@ -110,6 +111,23 @@ void printChangeResponse(const gi::ChangeResponse& r) {
     }
     std::cout << "; frame " << number(r.movingFrameMs) << " ms moving, " << number(r.staticFrameMs)
               << " ms static\n";
+}
+
+void printSkipCheck(const gi::SkipCheck& c) {
+    std::cout << "  skip check " << c.scene << " / " << c.technique << " / " << c.preset << ": '" << c.pass
+              << "' (" << c.reason << ", " << c.framesSkipped << " frame(s)): ";
+    if (!c.forceable) {
+        std::cout << "nothing to run, cannot be forced\n";
+        return;
+    }
+    std::cout << "saves " << number(c.savedMs()) << " ms a frame (" << number(c.frameMs) << " -> "
+              << number(c.forcedFrameMs) << " forced"
+              << (c.framesSkippedForced
+                      ? ", still skipped in " + std::to_string(c.framesSkippedForced) + " forced frame(s)"
+                      : std::string())
+              << "), image relMSE " << number(c.imageRelMse)
+              << " without it: " << (c.withinTolerance() ? "within " : "OVER ")
+              << number(gi::kSkipImageTolerance) << '\n';
 }
 
 int runBench(const ParsedArgs& args) {
@@ -218,6 +236,7 @@ int runBench(const ParsedArgs& args) {
 
     std::vector<gi::BenchRecord> records;
     std::vector<gi::ChangeResponse> responses;
+    std::vector<gi::SkipCheck> skipChecks;
     gi::BenchShardManifest manifest{.shard = shard.value_or(gi::Shard{}), .totalRows = matrix.rowCount()};
     for (size_t s = 0; s < scenes.size(); ++s) {
         const scene::Scene& scene = scenes[s];
@@ -236,6 +255,7 @@ int runBench(const ParsedArgs& args) {
 
         const gi::RunRequest run{.width = width, .height = height, .frames = frames, .seed = kPathTracerSeed};
         std::map<std::string, std::vector<double>> realTimeFrameMs;
+        const bool verifySkips = args.has("verify-skips");
         for (const std::string& technique : matrix.realTimeTechniques()) {
             if (!runs(s, technique)) {
                 continue;
@@ -249,6 +269,14 @@ int runBench(const ParsedArgs& args) {
                 manifest.rows.push_back(matrix.realTimeRow(s, technique, p));
                 printRun(scene.name, records.back().run);
                 realTimeFrameMs[technique].push_back(records.back().run.frameMs);
+                if (verifySkips) {
+                    for (gi::SkipCheck& check :
+                         gi::checkSkips(*device, pipelines, scene, gi::parseGiTechnique(technique), preset,
+                                        run, reference, records.back().run)) {
+                        printSkipCheck(check);
+                        skipChecks.push_back(std::move(check));
+                    }
+                }
                 if (changeFrames > 0 && !scene.animation.empty()) {
                     responses.push_back(gi::measureChangeResponse(
                         *device, pipelines, scene, gi::parseGiTechnique(technique), preset,
@@ -304,6 +332,11 @@ int runBench(const ParsedArgs& args) {
         gi::writeChangeResponseCsv(changeCsv, responses);
         std::cout << "wrote " << changeCsv.string() << '\n';
     }
+    if (args.has("verify-skips")) {
+        const std::filesystem::path skipsCsv = outDir / "skips.csv";
+        gi::writeSkipChecksCsv(skipsCsv, skipChecks);
+        std::cout << "wrote " << skipsCsv.string() << '\n';
+    }
     if (shard) {
         manifest.run = {.scenes = sceneNames,
                         .techniques = techniques,
@@ -328,6 +361,13 @@ int runBench(const ParsedArgs& args) {
                                                presets, records, autoCsv);
         std::cout << "wrote " << autoCsv.string() << " (auto's choice differs from the matrix's on " << differ
                   << " of " << scenes.size() << " scene(s))\n";
+    }
+    const auto changing =
+        std::ranges::count_if(skipChecks, [](const gi::SkipCheck& c) { return !c.withinTolerance(); });
+    if (changing != 0) {
+        std::cerr << "bench: " << changing << " skip(s) change the image by more than relMSE "
+                  << number(gi::kSkipImageTolerance) << " (DIR/skips.csv)\n";
+        return 1;
     }
     uint64_t nonFinite = 0;
     for (const gi::BenchRecord& record : records) {
@@ -354,7 +394,8 @@ Command benchCommand() {
             "lumina bench [--scenes A,B] [--techniques direct,lumen,ddgi,sh-grid,pathtracer] [--presets "
             "low,medium,high] "
             "[--pt-budgets 1,4,16] [--size WxH] [--frames N] [--reference-spp N] [--cache DIR] [--out DIR] "
-            "[--shard i/n] [--check-auto E [--calibration-size WxH] [--calibration-frames N] "
+            "[--shard i/n] [--verify-skips] [--check-auto E [--calibration-size WxH] [--calibration-frames "
+            "N] "
             "[--calibration-spp N]] "
             "[--no-default-light] [--sky FILE.exr [--sky-intensity K]]",
         .description =
@@ -401,6 +442,12 @@ Command benchCommand() {
               "(its "
               "calibration, --calibration-*) with the matrix's cheapest configuration under E "
               "(DIR/auto_check.csv); not with --shard"},
+             {"verify-skips", "",
+              "after each real-time run, run it again with each skip of unchanged work forced off (a shadow "
+              "map redrawn, radiosity refined on, the SH grid rebaked...): the GPU ms a frame each skip "
+              "saves "
+              "and the image's relMSE without it, which must be at most 0.001, else exit 1 "
+              "(DIR/skips.csv; docs/measurement.md#skips)"},
              {"change-frames", "N",
               "for animated scenes: play N frames of the animation, hold the pose, and measure the frames "
               "and GPU ms until each real-time run is within relMSE 0.01 of a fresh converged render of that "

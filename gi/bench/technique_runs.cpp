@@ -59,6 +59,7 @@ void runFrames(rhi::IDevice& device, PipelineCache& pipelines, const RunRequest&
     for (uint32_t frameIndex = 0; frameIndex < request.frames; ++frameIndex) {
         list->begin();
         FrameContext frame(pipelines, *list, frameIndex);
+        frame.setForcedPasses(&request.forcedPasses);
         hooks.record(frame);
         list->end();
         queue.waitForValue(queue.submit(*list));
@@ -80,6 +81,7 @@ void runFrames(rhi::IDevice& device, PipelineCache& pipelines, const RunRequest&
     run.frames = request.frames;
     run.frameMs = table.medianFrameMs();
     run.passes = table.passes();
+    run.skips = table.skips();
     if (settledTable.recordedFrames() != 0) {
         run.settledFrameMs = settledTable.medianFrameMs();
         run.settledPasses = settledTable.passes();

@@ -64,6 +64,7 @@ struct TechniqueRun {
     uint64_t gpuMemoryBytes = 0;           // device memory the technique (with its scene upload) holds
     uint64_t nonFinitePixels = 0;          // in any checkpoint's final or indirect image; must be 0
     image::Image finalImage{};             // R, G, B after the last frame
+    std::vector<SkipCount> skips{};        // every pass skipped in some frame, why, and how often
 };
 
 struct RunRequest {
@@ -72,6 +73,8 @@ struct RunRequest {
     uint32_t frames = 16;
     uint32_t samplesPerFrame = 1; // path tracer only
     uint32_t seed = 1;
+    // Passes whose skips of unchanged work are forced off in every frame (FrameContext::mayReuse).
+    std::vector<std::string> forcedPasses{};
 };
 
 // A real-time technique (direct, lumen or ddgi) through FrameRenderer. Throws std::invalid_argument

@@ -9,16 +9,17 @@
 //       .read(0, gbuffer.albedo).read(1, gbuffer.normal)
 //       .write(0, directLight)
 //       .dispatchThreads(width, height, {8, 8});
+#include "gi/core/pipeline_cache.h"
+#include "rhi/rhi.h"
+
+#include <algorithm>
 #include <array>
+#include <cstdint>
 #include <cstring>
 #include <optional>
-#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include "gi/core/pipeline_cache.h"
-#include "rhi/rhi.h"
 
 namespace lumina::gi {
 
@@ -73,7 +74,8 @@ public:
     // Push constants (root constants on D3D12): at most 128 bytes.
     template <typename T>
     Self& constants(const T& value) {
-        static_assert(sizeof(T) % 4 == 0 && sizeof(T) <= 128, "push constants: multiple of 4 bytes, at most 128");
+        static_assert(sizeof(T) % 4 == 0 && sizeof(T) <= 128,
+                      "push constants: multiple of 4 bytes, at most 128");
         pushConstants_.resize(sizeof(T));
         std::memcpy(pushConstants_.data(), &value, sizeof(T));
         return static_cast<Self&>(*this);
@@ -120,7 +122,8 @@ struct RasterDraw {
 
     template <typename T>
     static RasterDraw with(const rhi::DrawArgs& args, const T& value) {
-        static_assert(sizeof(T) % 4 == 0 && sizeof(T) <= 128, "push constants: multiple of 4 bytes, at most 128");
+        static_assert(sizeof(T) % 4 == 0 && sizeof(T) <= 128,
+                      "push constants: multiple of 4 bytes, at most 128");
         RasterDraw draw{args};
         std::memcpy(draw.constants.data(), &value, sizeof(T));
         draw.constantBytes = sizeof(T);
@@ -131,7 +134,8 @@ struct RasterDraw {
 // A raster pass: vertex + pixel kernels drawing into attachments (loaded, not cleared).
 class RasterPass : public PassBindings<RasterPass> {
 public:
-    RasterPass(FrameContext& frame, std::string_view name, std::string_view vertexKernel, std::string_view pixelKernel)
+    RasterPass(FrameContext& frame, std::string_view name, std::string_view vertexKernel,
+               std::string_view pixelKernel)
         : frame_(frame), name_(name), vertexKernel_(vertexKernel), pixelKernel_(pixelKernel) {}
 
     RasterPass& state(const RasterPipelineState& state) {
@@ -178,13 +182,23 @@ public:
     ComputePass compute(std::string_view passName, std::string_view kernel) {
         return ComputePass(*this, passName, kernel);
     }
-    RasterPass raster(std::string_view passName, std::string_view vertexKernel, std::string_view pixelKernel) {
+    RasterPass raster(std::string_view passName, std::string_view vertexKernel,
+                      std::string_view pixelKernel) {
         return RasterPass(*this, passName, vertexKernel, pixelKernel);
     }
     // A pass that does not run this frame, and why ("no point lights").
     void skip(std::string_view passName, std::string_view reason) {
         skipped_.push_back({std::string(passName), std::string(reason)});
     }
+    // Whether `passName` may skip work whose output would not change (a shadow map of geometry
+    // that did not move, radiosity that converged). False for a pass forced to run: `lumina bench
+    // --verify-skips` measures what each skip saves and that the image does not change without it
+    // (docs/measurement.md#skips).
+    bool mayReuse(std::string_view passName) const {
+        return !forced_ || std::find(forced_->begin(), forced_->end(), passName) == forced_->end();
+    }
+    // The passes whose reuse skips are forced off from now on (mayReuse); null: none. Not owned.
+    void setForcedPasses(const std::vector<std::string>* passes) { forced_ = passes; }
 
     rhi::ICommandList& commands() { return commands_; }
     PipelineCache& pipelines() { return pipelines_; }
@@ -203,6 +217,7 @@ private:
     uint64_t frameIndex_;
     std::vector<SkippedPass> skipped_;
     FiniteCheck* finiteCheck_ = nullptr;
+    const std::vector<std::string>* forced_ = nullptr;
 };
 
 } // namespace lumina::gi

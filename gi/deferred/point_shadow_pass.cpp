@@ -57,14 +57,12 @@ void PointShadowPass::renderCube(FrameContext& frame, uint32_t cube,
     const std::vector<RasterDraw> cover{RasterDraw{.args = {.vertexOrIndexCount = 3}}};
     for (uint32_t face = 0; face < LUMINA_CUBE_FACE_COUNT; ++face) {
         const uint32_t layer = cube * LUMINA_CUBE_FACE_COUNT + face;
-        frame
-            .raster("point shadows", "deferred/shadow_layer_clear.vsMain",
-                    "deferred/shadow_layer_clear.psMain")
+        frame.raster(kPassName, "deferred/shadow_layer_clear.vsMain", "deferred/shadow_layer_clear.psMain")
             .state(clear)
             .colorTarget(distance_, layer)
             .depthTarget(depth_, layer)
             .draw(cover, false);
-        frame.raster("point shadows", "deferred/point_shadow.vsMain", "deferred/point_shadow.psMain")
+        frame.raster(kPassName, "deferred/point_shadow.vsMain", "deferred/point_shadow.psMain")
             .state(casters)
             .constantBuffer(1, shadowConstants)
             .read(0, gpuScene_.vertices)
@@ -87,7 +85,7 @@ std::vector<bool> PointShadowPass::record(FrameContext& frame, const std::vector
     std::vector<bool> rendered(cubes.size(), false);
     cubeCount_ = static_cast<uint32_t>(cubes.size());
     if (cubes.empty()) {
-        frame.skip("point shadows", "no point or spot lights");
+        frame.skip(kPassName, "no point or spot lights");
         return rendered;
     }
     const bool fresh = allocate(cubeCount_);
@@ -102,7 +100,7 @@ std::vector<bool> PointShadowPass::record(FrameContext& frame, const std::vector
                 const glm::vec3 nearest = glm::clamp(glm::vec3(sphere), box.min, box.max);
                 return !box.empty() && glm::distance(nearest, glm::vec3(sphere)) <= sphere.w;
             });
-        if (!fresh && sphere == renderedCubes_[cube] && !geometryInRange) {
+        if (!fresh && sphere == renderedCubes_[cube] && !geometryInRange && frame.mayReuse(kPassName)) {
             kept.push_back(std::to_string(cube) + " (since frame " + std::to_string(renderedFrames_[cube]) +
                            ")");
             continue;
@@ -114,13 +112,13 @@ std::vector<bool> PointShadowPass::record(FrameContext& frame, const std::vector
     }
     if (kept.size() == cubes.size()) {
         const uint64_t last = *std::max_element(renderedFrames_.begin(), renderedFrames_.end());
-        frame.skip("point shadows", "unchanged since frame " + std::to_string(last));
+        frame.skip(kPassName, "unchanged since frame " + std::to_string(last));
     } else if (!kept.empty()) {
         std::string list;
         for (const std::string& k : kept) {
             list += (list.empty() ? "" : ", ") + k;
         }
-        frame.skip("point shadows: unchanged cubes", list);
+        frame.skip(std::string(kPassName) + ": unchanged cubes", list);
     }
     return rendered;
 }

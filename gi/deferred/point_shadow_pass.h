@@ -17,6 +17,8 @@ namespace lumina::gi {
 
 class PointShadowPass {
 public:
+    static constexpr const char* kPassName = "point shadows";
+
     PointShadowPass(rhi::IDevice& device, const GpuScene& gpuScene, uint32_t faceSize);
 
     // cubes: per shadowed light, xyz position and w shadow range (DeferredShadowConstants::pointLights).

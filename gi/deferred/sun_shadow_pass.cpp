@@ -26,11 +26,11 @@ bool SunShadowPass::record(FrameContext& frame, const std::optional<SunShadowFit
     }
     if (!fit) {
         valid_ = false;
-        frame.skip("sun shadow", "no directional light");
+        frame.skip(kPassName, "no directional light");
         return false;
     }
-    if (valid_ && fit->viewProjRows == renderedRows_ && !geometryMoved) {
-        frame.skip("sun shadow", "unchanged since frame " + std::to_string(renderedFrame_));
+    if (valid_ && fit->viewProjRows == renderedRows_ && !geometryMoved && frame.mayReuse(kPassName)) {
+        frame.skip(kPassName, "unchanged since frame " + std::to_string(renderedFrame_));
         return false;
     }
     if (!map_) {
@@ -40,7 +40,7 @@ bool SunShadowPass::record(FrameContext& frame, const std::optional<SunShadowFit
     RasterPipelineState state;
     state.raster.cullMode = rhi::CullMode::None; // both faces cast (single-sided walls included)
     state.depth = {.testEnable = true, .writeEnable = true, .compareOp = rhi::CompareOp::Less};
-    frame.raster("sun shadow", "deferred/sun_shadow.vsMain", "")
+    frame.raster(kPassName, "deferred/sun_shadow.vsMain", "")
         .state(state)
         .constantBuffer(1, shadowConstants)
         .read(0, gpuScene_.vertices)

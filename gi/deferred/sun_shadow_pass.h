@@ -17,6 +17,8 @@ namespace lumina::gi {
 
 class SunShadowPass {
 public:
+    static constexpr const char* kPassName = "sun shadow";
+
     SunShadowPass(rhi::IDevice& device, const GpuScene& gpuScene, uint32_t mapSize);
 
     // `fit` is empty when the scene has no directional light. shadowConstants holds

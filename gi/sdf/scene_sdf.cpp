@@ -158,6 +158,11 @@ void SceneSdf::record(gi::FrameContext& frame, const glm::vec3& camera) {
         GlobalSdfChangeTracker& tracker = trackers_[c];
         tracker.setGrid(grid);
         GlobalSdfChangeTracker::Changes changes = tracker.update(data_.instances);
+        if (!frame.mayReuse(kComposePassName)) {
+            // Forced: every brick recomposed from the same instances, to the same distances.
+            std::fill(changes.dirtyBricks.begin(), changes.dirtyBricks.end(), uint8_t(1));
+            changes.dirtyBrickCount = uint32_t(changes.dirtyBricks.size());
+        }
         if (window != windows_[c]) {
             // The bricks that were outside the old window hold another part of the lattice.
             uint32_t exposed = 0;

@@ -63,7 +63,16 @@ void ShGridGi::record(FrameContext& frame, const DeferredRenderer& deferred, con
     if (!uploaded_) {
         uploadInitial(frame.commands());
     }
-    const std::vector<uint32_t> probes = schedule_.next(settings_.probesPerFrame);
+    std::vector<uint32_t> probes = schedule_.next(settings_.probesPerFrame);
+    if (probes.empty() && !frame.mayReuse(kBakeName)) {
+        // Forced: the budget's worth of probes bakes again, in turn round the grid.
+        const uint32_t count = schedule_.probeCount();
+        for (uint32_t i = 0; i < settings_.probesPerFrame && i < count; ++i) {
+            probes.push_back((forcedNext_ + i) % count);
+        }
+        forcedNext_ = count ? uint32_t((forcedNext_ + probes.size()) % count) : 0;
+        std::sort(probes.begin(), probes.end());
+    }
     lastBaked_ = uint32_t(probes.size());
     if (probes.empty()) {
         frame.skip(kBakeName, "no probe dirty or owed a bake (nothing changed)");

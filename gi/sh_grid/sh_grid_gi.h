@@ -72,6 +72,7 @@ private:
     std::optional<ShGridFile> loaded_; // uploaded at the first record()
     bool uploaded_ = false;
     uint32_t lastBaked_ = 0;
+    uint32_t forcedNext_ = 0; // the next probe a forced bake takes (FrameContext::mayReuse)
 };
 
 } // namespace lumina::gi

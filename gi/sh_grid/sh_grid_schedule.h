@@ -33,6 +33,7 @@ public:
     bool idle() const { return owed_ == 0; }
     uint64_t owedBakes() const { return owed_; }
     uint32_t dirtyProbes() const;
+    uint32_t probeCount() const { return uint32_t(remaining_.size()); }
 
 private:
     void owe(uint32_t probe, uint32_t bakes);

@@ -67,8 +67,8 @@ void RadiositySchedule::restart() {
     }
 }
 
-std::vector<uint32_t> RadiositySchedule::next() {
-    if (tiles_.empty() || converged()) {
+std::vector<uint32_t> RadiositySchedule::next(bool refineConverged) {
+    if (tiles_.empty() || (converged() && !refineConverged)) {
         return {};
     }
     ++counter_;

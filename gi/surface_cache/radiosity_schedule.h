@@ -37,8 +37,9 @@ public:
     // A light or object moved: bounces count from zero again.
     void restart();
 
-    // This update's tiles (at most the budget), and counts them as updated; empty once converged.
-    std::vector<uint32_t> next();
+    // This update's tiles (at most the budget), and counts them as updated; empty once converged,
+    // unless `refineConverged`: then the refinement average goes on, one more pass per tile.
+    std::vector<uint32_t> next(bool refineConverged = false);
     // The weight of this update's trace against the probes' history: 1 while bounces propagate,
     // 1 / (k + 1) in the k-th refinement pass (taken from the least-updated tile picked; with a
     // budget below the tile count the picked tiles differ by at most one pass).

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <glm/gtc/packing.hpp>
 #include <limits>
+#include <numeric>
 #include <string>
 
 namespace lumina::surface_cache {
@@ -141,6 +142,9 @@ bool SurfaceCache::recordDirectLight(gi::FrameContext& frame, const std::optiona
     directLightsVersion_ = lights->lightsVersion;
     directShadowFrames_ = lights->shadowFrames;
     relightCards_.clear();
+    if (tiles.empty() && !frame.mayReuse(kPass)) {
+        tiles = cardTiles_; // forced: every card relit by the same lights, to the same values
+    }
     if (tiles.empty()) {
         frame.skip(kPass, "no light, shadow or card changed");
         return false;
@@ -250,8 +254,13 @@ void SurfaceCache::update(gi::FrameContext& frame, const std::optional<gi::Shado
 
     // The first update captures everything (a load, not a frame in motion); later ones spread a
     // large change over frames, most useful cards first.
-    const std::vector<uint32_t> dirty =
+    std::vector<uint32_t> dirty =
         cards_.dirtyCards(updates_ == 0 ? UINT32_MAX : cards_.settings().capturesPerFrame);
+    if (dirty.empty() && !frame.mayReuse(kCapturePassName)) {
+        // Forced: every card captured again from the same geometry.
+        dirty.resize(cards_.cards().size());
+        std::iota(dirty.begin(), dirty.end(), 0u);
+    }
     std::vector<uint32_t> dirtyTiles;
     if (dirty.empty()) {
         frame.skip(kCapturePassName, "no dirty cards");
@@ -269,7 +278,10 @@ void SurfaceCache::update(gi::FrameContext& frame, const std::optional<gi::Shado
 
     // Combine and voxel lighting only when what they read changed: the capture, the direct
     // light, or the indirect light the last update's radiosity wrote.
-    if (!dirty.empty() || directChanged || indirectChanged_) {
+    const bool combineForced = !frame.mayReuse(SurfaceCacheCombinePass::kPassName) ||
+                               !frame.mayReuse(VoxelLightingPass::kInjectPassName) ||
+                               !frame.mayReuse(VoxelLightingPass::kResolvePassName);
+    if (!dirty.empty() || directChanged || indirectChanged_ || combineForced) {
         combine_.record(frame, atlas_, allTiles_, updates_);
         const AtlasSurfaceBindings surfaces{atlas_, tileOwner_.texture(), cardBuffer_, capture_.depth()};
         voxels_.record(frame, surfaces, allTiles_, updates_);
@@ -280,7 +292,8 @@ void SurfaceCache::update(gi::FrameContext& frame, const std::optional<gi::Shado
         frame.skip(VoxelLightingPass::kResolvePassName, "nothing changed");
     }
 
-    const std::vector<uint32_t> tiles = schedule_.next();
+    // Forced, converged radiosity goes on refining (the average of one more pass per tile).
+    const std::vector<uint32_t> tiles = schedule_.next(!frame.mayReuse(RadiosityPass::kTracePassName));
     if (tiles.empty()) {
         const std::string reason =
             "converged after " + std::to_string(schedule_.requiredBounces()) + " bounces and " +

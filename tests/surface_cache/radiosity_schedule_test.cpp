@@ -98,6 +98,15 @@ TEST(RadiositySchedule, BudgetDirtyFirstThenOldestUntilConverged) {
     EXPECT_NE(std::find(blends.begin(), blends.end(), 0.5f), blends.end());
     EXPECT_TRUE(schedule.next().empty()) << "converged: nothing to do";
 
+    // Forced on (lumina bench --verify-skips), converged radiosity goes on refining: the least
+    // updated tiles first, each pass averaged in at a smaller weight than the last.
+    const float lastBlend = schedule.lastBlend();
+    EXPECT_EQ(schedule.next(/*refineConverged=*/true).size(), 4u);
+    EXPECT_LE(schedule.lastBlend(), lastBlend);
+    EXPECT_GT(schedule.lastBlend(), 0.0f);
+    EXPECT_TRUE(schedule.converged());
+    EXPECT_TRUE(schedule.next().empty()) << "not forced: still nothing to do";
+
     // A light moved: everything runs again.
     schedule.restart();
     EXPECT_FALSE(schedule.converged());
