@@ -39,11 +39,9 @@ const std::vector<std::vector<std::string>>& forceableGroups() {
     return groups;
 }
 
-// Structural skips inside a forceable pass: there is nothing to render, forced or not.
-bool nothingToRun(std::string_view reason) {
-    return reason.starts_with("no ") && !reason.starts_with("no light, shadow or card changed") &&
-           !reason.starts_with("no probe dirty") && !reason.starts_with("no dirty cards") &&
-           !reason.starts_with("no instance moved");
+// A skip that left nothing to render (no light of that kind, no cards): forcing changes nothing.
+bool nothingToRun(const SkipCount& skip) {
+    return skip.kind != SkipKind::Reuse;
 }
 
 double settledOrWholeMs(const TechniqueRun& run) {
@@ -80,7 +78,7 @@ std::vector<SkipCheck> checkSkips(rhi::IDevice& device, PipelineCache& pipelines
             group.reason = skip.reason;
             group.reasonFrames = skip.frames;
         }
-        group.structural = group.structural && (forced.empty() || nothingToRun(skip.reason));
+        group.structural = group.structural && (forced.empty() || nothingToRun(skip));
     }
     std::vector<SkipCheck> checks;
     for (const auto& [pass, group] : groups) {
@@ -97,7 +95,7 @@ std::vector<SkipCheck> checkSkips(rhi::IDevice& device, PipelineCache& pipelines
             const TechniqueRun forced =
                 runRealTime(device, pipelines, scene, technique, preset, forcedRequest, reference);
             for (const SkipCount& skip : forced.skips) {
-                if (forcedPassFor(skip.pass) == pass && !nothingToRun(skip.reason)) {
+                if (forcedPassFor(skip.pass) == pass && !nothingToRun(skip)) {
                     check.framesSkippedForced = std::max(check.framesSkippedForced, skip.frames);
                 }
             }

@@ -20,7 +20,7 @@ namespace lumina::gi {
 
 namespace {
 
-// Samples timed for pathTracerMsPerSample, after one warm-up sample.
+// Samples in each timed batch of pathTracerMsPerSample (three, after one warm-up sample).
 constexpr uint32_t kCalibrationSamples = 4;
 
 // Measures one checkpoint: the final image and the indirect term against the reference.
@@ -191,22 +191,28 @@ double pathTracerMsPerSample(rhi::IDevice& device, PipelineCache& pipelines, con
     PathTracer tracer(device, traced, scene, {.width = width, .height = height, .seed = 7, .aovs = true});
     rhi::CommandListHandle list = device.createCommandList();
     rhi::IQueue& queue = device.queue(rhi::QueueType::Graphics);
-    double ms = 0.0;
-    // The first submission also compiles the kernel on some drivers; the second is timed as
+    // The first submission also compiles the kernel on some drivers; the others are timed as
     // the bench's frames are: several samples in one list (lavapipe runs dispatches
-    // asynchronously, so a lone dispatch's timestamps say little).
-    for (uint32_t samples : {1u, kCalibrationSamples}) {
+    // asynchronously, so a lone dispatch's timestamps say little). The fastest of three: on the
+    // H200 one batch right after the references read 17.5 ms a sample of `city` at 1080p, where
+    // the runs' frames then took 4.9 ms for one sample.
+    double fastest = 0.0;
+    for (uint32_t batch = 0; batch < 4; ++batch) {
+        const uint32_t samples = batch == 0 ? 1u : kCalibrationSamples;
         list->begin();
         FrameContext frame(pipelines, *list, samples);
         tracer.recordSamples(frame, samples);
         list->end();
         queue.waitForValue(queue.submit(*list));
-        ms = 0.0;
+        double ms = 0.0;
         for (const rhi::TimerResult& timer : list->timerResults()) {
             ms += timer.milliseconds;
         }
+        if (batch == 1 || (batch > 1 && ms < fastest)) {
+            fastest = ms;
+        }
     }
-    return ms / kCalibrationSamples;
+    return fastest / kCalibrationSamples;
 }
 
 } // namespace lumina::gi

@@ -25,9 +25,15 @@ namespace lumina::gi {
 
 class FiniteCheck;
 
+// Why a pass did not run: it had nothing to do (no light of its kind, a strategy that draws no
+// rays), or its output from an earlier frame still holds because nothing it reads changed. Only
+// the second saves time that `lumina bench --verify-skips` can measure by forcing it off.
+enum class SkipKind : uint8_t { NothingToRun, Reuse };
+
 struct SkippedPass {
     std::string pass;
     std::string reason;
+    SkipKind kind = SkipKind::NothingToRun;
 };
 
 class FrameContext;
@@ -186,9 +192,15 @@ public:
                       std::string_view pixelKernel) {
         return RasterPass(*this, passName, vertexKernel, pixelKernel);
     }
-    // A pass that does not run this frame, and why ("no point lights").
+    // A pass that does not run this frame because it has nothing to do, and why ("no point lights").
     void skip(std::string_view passName, std::string_view reason) {
-        skipped_.push_back({std::string(passName), std::string(reason)});
+        skipped_.push_back({std::string(passName), std::string(reason), SkipKind::NothingToRun});
+    }
+    // A pass that does not run because its earlier output still holds. A pass forced to run that
+    // still skips had nothing at all to do (no cards, no probes), and is recorded as such.
+    void skipReused(std::string_view passName, std::string_view reason) {
+        const SkipKind kind = mayReuse(passName) ? SkipKind::Reuse : SkipKind::NothingToRun;
+        skipped_.push_back({std::string(passName), std::string(reason), kind});
     }
     // Whether `passName` may skip work whose output would not change (a shadow map of geometry
     // that did not move, radiosity that converged). False for a pass forced to run: `lumina bench

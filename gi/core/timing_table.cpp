@@ -1,11 +1,11 @@
 #include "gi/core/timing_table.h"
 
+#include "rhi/error.h"
+
 #include <algorithm>
 #include <fstream>
 #include <iomanip>
 #include <nlohmann/json.hpp>
-
-#include "rhi/error.h"
 
 namespace lumina::gi {
 
@@ -22,7 +22,8 @@ double median(std::vector<double> values) {
     return (*std::max_element(values.begin(), values.begin() + mid) + upper) / 2.0;
 }
 
-void TimingTable::addFrame(const std::vector<rhi::TimerResult>& timers, const std::vector<SkippedPass>& skipped) {
+void TimingTable::addFrame(const std::vector<rhi::TimerResult>& timers,
+                           const std::vector<SkippedPass>& skipped) {
     if (seenFrames_++ < warmupFrames_) {
         return;
     }
@@ -46,7 +47,7 @@ void TimingTable::addFrame(const std::vector<rhi::TimerResult>& timers, const st
     }
     frameTotals_.push_back(total);
     for (const SkippedPass& skip : skipped) {
-        ++skipCounts_[{skip.pass, skip.reason}];
+        ++skipCounts_[{skip.pass, skip.reason, skip.kind}];
     }
 }
 
@@ -58,8 +59,9 @@ std::vector<PassTiming> TimingTable::passes() const {
                        *std::max_element(values.begin(), values.end()), uint32_t(values.size())});
     }
     if (!frameTotals_.empty()) {
-        out.push_back({"frame", median(frameTotals_), *std::min_element(frameTotals_.begin(), frameTotals_.end()),
-                       *std::max_element(frameTotals_.begin(), frameTotals_.end()), uint32_t(frameTotals_.size())});
+        out.push_back(
+            {"frame", median(frameTotals_), *std::min_element(frameTotals_.begin(), frameTotals_.end()),
+             *std::max_element(frameTotals_.begin(), frameTotals_.end()), uint32_t(frameTotals_.size())});
     }
     return out;
 }
@@ -67,21 +69,26 @@ std::vector<PassTiming> TimingTable::passes() const {
 std::vector<SkipCount> TimingTable::skips() const {
     std::vector<SkipCount> out;
     for (const auto& [key, count] : skipCounts_) {
-        out.push_back({key.first, key.second, count});
+        const auto& [pass, reason, kind] = key;
+        out.push_back({pass, reason, count, kind});
     }
     return out;
 }
 
-double TimingTable::medianFrameMs() const { return median(frameTotals_); }
+double TimingTable::medianFrameMs() const {
+    return median(frameTotals_);
+}
 
 void TimingTable::print(std::ostream& out) const {
-    out << "GPU time per pass over " << recordedFrames_ << " frame(s) after " << warmupFrames_ << " warm-up:\n";
-    out << std::left << std::setw(40) << "  pass" << std::right << std::setw(11) << "median ms" << std::setw(11)
-        << "min ms" << std::setw(11) << "max ms" << std::setw(8) << "runs" << '\n';
+    out << "GPU time per pass over " << recordedFrames_ << " frame(s) after " << warmupFrames_
+        << " warm-up:\n";
+    out << std::left << std::setw(40) << "  pass" << std::right << std::setw(11) << "median ms"
+        << std::setw(11) << "min ms" << std::setw(11) << "max ms" << std::setw(8) << "runs" << '\n';
     out << std::fixed << std::setprecision(4);
     for (const PassTiming& pass : passes()) {
         out << "  " << std::left << std::setw(38) << pass.name << std::right << std::setw(11) << pass.medianMs
-            << std::setw(11) << pass.minMs << std::setw(11) << pass.maxMs << std::setw(8) << pass.frames << '\n';
+            << std::setw(11) << pass.minMs << std::setw(11) << pass.maxMs << std::setw(8) << pass.frames
+            << '\n';
     }
     out << std::defaultfloat;
     for (const SkipCount& skip : skips()) {
@@ -89,7 +96,8 @@ void TimingTable::print(std::ostream& out) const {
     }
 }
 
-void TimingTable::writeJson(const std::filesystem::path& path, const std::map<std::string, std::string>& context) const {
+void TimingTable::writeJson(const std::filesystem::path& path,
+                            const std::map<std::string, std::string>& context) const {
     nlohmann::json root;
     for (const auto& [key, value] : context) {
         root["context"][key] = value;
@@ -97,12 +105,17 @@ void TimingTable::writeJson(const std::filesystem::path& path, const std::map<st
     root["warmupFrames"] = warmupFrames_;
     root["frames"] = recordedFrames_;
     for (const PassTiming& pass : passes()) {
-        root["passes"].push_back(
-            {{"name", pass.name}, {"medianMs", pass.medianMs}, {"minMs", pass.minMs}, {"maxMs", pass.maxMs},
-             {"runs", pass.frames}});
+        root["passes"].push_back({{"name", pass.name},
+                                  {"medianMs", pass.medianMs},
+                                  {"minMs", pass.minMs},
+                                  {"maxMs", pass.maxMs},
+                                  {"runs", pass.frames}});
     }
     for (const SkipCount& skip : skips()) {
-        root["skipped"].push_back({{"pass", skip.pass}, {"reason", skip.reason}, {"frames", skip.frames}});
+        root["skipped"].push_back({{"pass", skip.pass},
+                                   {"reason", skip.reason},
+                                   {"kind", skip.kind == SkipKind::Reuse ? "reuse" : "nothing to run"},
+                                   {"frames", skip.frames}});
     }
     std::ofstream file(path);
     if (!file) {

@@ -9,6 +9,7 @@
 #include <map>
 #include <ostream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace lumina::gi {
@@ -25,6 +26,7 @@ struct SkipCount {
     std::string pass;
     std::string reason;
     uint32_t frames = 0;
+    SkipKind kind = SkipKind::NothingToRun;
 };
 
 class TimingTable {
@@ -54,7 +56,7 @@ private:
     std::vector<std::string> order_;
     std::map<std::string, std::vector<double>> samples_;
     std::vector<double> frameTotals_;
-    std::map<std::pair<std::string, std::string>, uint32_t> skipCounts_;
+    std::map<std::tuple<std::string, std::string, SkipKind>, uint32_t> skipCounts_;
 };
 
 double median(std::vector<double> values);

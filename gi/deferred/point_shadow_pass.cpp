@@ -112,13 +112,13 @@ std::vector<bool> PointShadowPass::record(FrameContext& frame, const std::vector
     }
     if (kept.size() == cubes.size()) {
         const uint64_t last = *std::max_element(renderedFrames_.begin(), renderedFrames_.end());
-        frame.skip(kPassName, "unchanged since frame " + std::to_string(last));
+        frame.skipReused(kPassName, "unchanged since frame " + std::to_string(last));
     } else if (!kept.empty()) {
         std::string list;
         for (const std::string& k : kept) {
             list += (list.empty() ? "" : ", ") + k;
         }
-        frame.skip(std::string(kPassName) + ": unchanged cubes", list);
+        frame.skipReused(std::string(kPassName) + ": unchanged cubes", list);
     }
     return rendered;
 }

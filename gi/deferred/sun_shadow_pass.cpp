@@ -30,7 +30,7 @@ bool SunShadowPass::record(FrameContext& frame, const std::optional<SunShadowFit
         return false;
     }
     if (valid_ && fit->viewProjRows == renderedRows_ && !geometryMoved && frame.mayReuse(kPassName)) {
-        frame.skip(kPassName, "unchanged since frame " + std::to_string(renderedFrame_));
+        frame.skipReused(kPassName, "unchanged since frame " + std::to_string(renderedFrame_));
         return false;
     }
     if (!map_) {

@@ -211,7 +211,7 @@ void SceneSdf::record(gi::FrameContext& frame, const glm::vec3& camera) {
     }
     if (batch.bricks.empty()) {
         lastCompose_.skipped = true;
-        frame.skip(kComposePassName, lastCompose_.reason);
+        frame.skipReused(kComposePassName, lastCompose_.reason);
         return;
     }
     lastCompose_.bricks = uint32_t(batch.bricks.size());

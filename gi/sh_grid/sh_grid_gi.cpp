@@ -44,6 +44,8 @@ void ShGridGi::uploadInitial(rhi::ICommandList& commands) {
         loaded_.reset();
     }
     commands.writeBuffer(*resources_.coefficients, data.data(), data.size() * sizeof(gpu::float4));
+    // A loaded grid's own sweeps are not in its file: bakes after a change start from the grid.
+    commands.writeBuffer(*resources_.bounceSource, data.data(), data.size() * sizeof(gpu::float4));
 
     const glm::vec2 window = shGridWindow(settings_.ringingWindow);
     gpu::ShGridConstants c{};
@@ -65,7 +67,8 @@ void ShGridGi::record(FrameContext& frame, const DeferredRenderer& deferred, con
     }
     std::vector<uint32_t> probes = schedule_.next(settings_.probesPerFrame);
     if (probes.empty() && !frame.mayReuse(kBakeName)) {
-        // Forced: the budget's worth of probes bakes again, in turn round the grid.
+        // Forced: the budget's worth of probes bakes again, in turn round the grid, from the last
+        // sweep's bounce source: to the values they hold.
         const uint32_t count = schedule_.probeCount();
         for (uint32_t i = 0; i < settings_.probesPerFrame && i < count; ++i) {
             probes.push_back((forcedNext_ + i) % count);
@@ -73,9 +76,13 @@ void ShGridGi::record(FrameContext& frame, const DeferredRenderer& deferred, con
         forcedNext_ = count ? uint32_t((forcedNext_ + probes.size()) % count) : 0;
         std::sort(probes.begin(), probes.end());
     }
+    if (schedule_.batchBeganSweep()) {
+        const uint64_t bytes = resources_.coefficients->desc().size;
+        frame.commands().copyBuffer(*resources_.bounceSource, 0, *resources_.coefficients, 0, bytes);
+    }
     lastBaked_ = uint32_t(probes.size());
     if (probes.empty()) {
-        frame.skip(kBakeName, "no probe dirty or owed a bake (nothing changed)");
+        frame.skipReused(kBakeName, "no probe dirty or owed a bake (nothing changed)");
     } else {
         bake_.record(frame, deferred, resources_, probes);
     }

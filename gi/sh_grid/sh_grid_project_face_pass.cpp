@@ -11,7 +11,7 @@ void ShGridProjectFacePass::record(FrameContext& frame, const ShGridResources& r
         .read(1, gbuffer.albedo)
         .read(2, gbuffer.normal)
         .read(3, gbuffer.position)
-        .read(4, r.coefficients)
+        .read(4, r.bounceSource)
         .write(0, r.partials)
         .constants(face)
         .dispatch(1);

@@ -23,6 +23,8 @@ ShGridResources ShGridResources::create(rhi::IDevice& device, const ShGridLayout
                                        .debugName = "sh grid: constants"});
     r.coefficients = createStructuredBuffer(device, uint64_t(layout.probes()) * LUMINA_SH_GRID_COEFFICIENTS,
                                             sizeof(gpu::float4), "sh grid: coefficients");
+    r.bounceSource = createStructuredBuffer(device, uint64_t(layout.probes()) * LUMINA_SH_GRID_COEFFICIENTS,
+                                            sizeof(gpu::float4), "sh grid: bounce source");
     r.partials = createStructuredBuffer(device, LUMINA_SH_GRID_FACES * LUMINA_SH_GRID_COEFFICIENTS,
                                         sizeof(gpu::float4), "sh grid: face projections");
     r.sampled =

@@ -15,6 +15,7 @@ struct ShGridResources {
 
     rhi::BufferHandle constants;    // ShGridConstants
     rhi::BufferHandle coefficients; // float4[probes x 9]: rgb irradiance coefficients (sh_grid_shared.h)
+    rhi::BufferHandle bounceSource; // the same, as the sweep under way began: what its bounces read
     rhi::BufferHandle partials;     // float4[6 faces x 9]: one face's projection each
     rhi::TextureHandle sampled;     // RGBA16F width x height: irradiance E per pixel
 

@@ -14,6 +14,7 @@ void ShGridSchedule::owe(uint32_t probe, uint32_t bakes) {
     if (remaining_[probe] < bakes) {
         owed_ += bakes - remaining_[probe];
         remaining_[probe] = bakes;
+        changedInSweep_ = true;
     }
 }
 
@@ -45,21 +46,21 @@ void ShGridSchedule::settle() {
 }
 
 std::vector<uint32_t> ShGridSchedule::next(uint32_t budget) {
+    const uint32_t level = remaining_.empty() ? 0u : *std::ranges::max_element(remaining_);
+    beganSweep_ = level > 0 && (level != sweepLevel_ || changedInSweep_);
+    if (beganSweep_) {
+        sweepLevel_ = level;
+        changedInSweep_ = false;
+    }
     std::vector<uint32_t> order;
     for (uint32_t p = 0; p < remaining_.size(); ++p) {
-        if (remaining_[p] > 0) {
+        if (level > 0 && remaining_[p] == level) {
             order.push_back(p);
         }
     }
-    const auto first = [&](uint32_t a, uint32_t b) {
-        if (dirty_[a] != dirty_[b]) {
-            return dirty_[a] > dirty_[b];
-        }
-        return remaining_[a] > remaining_[b];
-    };
-    const size_t take = std::min<size_t>(budget, order.size());
-    std::ranges::stable_sort(order, first);
-    order.resize(take);
+    // Dirty probes first: a change's own neighbourhood is baked before the rest of its sweep.
+    std::ranges::stable_sort(order, [&](uint32_t a, uint32_t b) { return dirty_[a] > dirty_[b]; });
+    order.resize(std::min<size_t>(budget, order.size()));
     for (uint32_t p : order) {
         --remaining_[p];
         --owed_;

@@ -26,9 +26,15 @@ public:
     // Nothing owed (a grid loaded from a file).
     void settle();
 
-    // Up to `budget` probes to bake now, dirty ones first, then those owing the most bakes (one
-    // sweep of the grid ends before the next begins), by index; counts their bakes as done.
+    // Up to `budget` probes to bake now, all of the current sweep (those owing the most bakes),
+    // dirty ones first, by index; counts their bakes as done. A batch never spans two sweeps: a
+    // sweep's bounces read the grid as it stood when the sweep began (Jacobi, not Gauss-Seidel),
+    // so each sweep adds exactly one bounce, and baking a probe again once nothing is owed gives
+    // exactly the value it has (the skip that `lumina bench --verify-skips` checks).
     std::vector<uint32_t> next(uint32_t budget);
+    // Whether the batch the last next() returned began a sweep (or followed a change): the grid is
+    // copied to the bounce source before it bakes.
+    bool batchBeganSweep() const { return beganSweep_; }
 
     bool idle() const { return owed_ == 0; }
     uint64_t owedBakes() const { return owed_; }
@@ -43,6 +49,9 @@ private:
     std::vector<uint32_t> remaining_; // per probe: bakes still owed
     std::vector<uint8_t> dirty_;      // per probe: near a change since its last bake
     uint64_t owed_ = 0;
+    uint32_t sweepLevel_ = 0;    // the bakes owed by the probes of the sweep under way; 0: none
+    bool changedInSweep_ = true; // owe() raised a probe since the sweep began
+    bool beganSweep_ = false;
 };
 
 } // namespace lumina::gi

@@ -146,7 +146,7 @@ bool SurfaceCache::recordDirectLight(gi::FrameContext& frame, const std::optiona
         tiles = cardTiles_; // forced: every card relit by the same lights, to the same values
     }
     if (tiles.empty()) {
-        frame.skip(kPass, "no light, shadow or card changed");
+        frame.skipReused(kPass, "no light, shadow or card changed");
         return false;
     }
     directTiles_.recordUpload(frame.commands(), tiles);
@@ -256,14 +256,16 @@ void SurfaceCache::update(gi::FrameContext& frame, const std::optional<gi::Shado
     // large change over frames, most useful cards first.
     std::vector<uint32_t> dirty =
         cards_.dirtyCards(updates_ == 0 ? UINT32_MAX : cards_.settings().capturesPerFrame);
-    if (dirty.empty() && !frame.mayReuse(kCapturePassName)) {
-        // Forced: every card captured again from the same geometry.
-        dirty.resize(cards_.cards().size());
-        std::iota(dirty.begin(), dirty.end(), 0u);
-    }
     std::vector<uint32_t> dirtyTiles;
-    if (dirty.empty()) {
-        frame.skip(kCapturePassName, "no dirty cards");
+    if (dirty.empty() && !frame.mayReuse(kCapturePassName) && !cards_.cards().empty()) {
+        // Forced: every card captured again from the same geometry, to the same texels (the
+        // albedo's dither is fixed per texel). Nothing downstream is told: nothing changed, and
+        // marking the tiles dirty would restart the radiosity every frame.
+        std::vector<uint32_t> all(cards_.cards().size());
+        std::iota(all.begin(), all.end(), 0u);
+        capture_.record(frame, atlas_, cardBuffer_, cards_.cards(), all);
+    } else if (dirty.empty()) {
+        frame.skipReused(kCapturePassName, "no dirty cards");
     } else {
         capture_.record(frame, atlas_, cardBuffer_, cards_.cards(), dirty);
         for (uint32_t card : dirty) {
@@ -287,9 +289,9 @@ void SurfaceCache::update(gi::FrameContext& frame, const std::optional<gi::Shado
         voxels_.record(frame, surfaces, allTiles_, updates_);
         indirectChanged_ = false;
     } else {
-        frame.skip(SurfaceCacheCombinePass::kPassName, "nothing changed");
-        frame.skip(VoxelLightingPass::kInjectPassName, "nothing changed");
-        frame.skip(VoxelLightingPass::kResolvePassName, "nothing changed");
+        frame.skipReused(SurfaceCacheCombinePass::kPassName, "nothing changed");
+        frame.skipReused(VoxelLightingPass::kInjectPassName, "nothing changed");
+        frame.skipReused(VoxelLightingPass::kResolvePassName, "nothing changed");
     }
 
     // Forced, converged radiosity goes on refining (the average of one more pass per tile).
@@ -300,7 +302,7 @@ void SurfaceCache::update(gi::FrameContext& frame, const std::optional<gi::Shado
             std::to_string(schedule_.requiredUpdates() - schedule_.requiredBounces()) + " refinement passes";
         for (const char* pass : {RadiosityPass::kTracePassName, RadiosityPass::kFilterPassName,
                                  RadiosityPass::kIntegratePassName}) {
-            frame.skip(pass, reason);
+            frame.skipReused(pass, reason);
         }
     } else {
         radiosityTiles_.recordUpload(frame.commands(), tiles);

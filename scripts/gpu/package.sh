@@ -18,5 +18,13 @@ for exe in "$root/.devbin/lumina" "$root"/.devbin/tests/*; do
   ldd "$exe" | awk '/=> \//{print $3}'
 done | sort -u | grep -vE 'libc\.so|libm\.so|ld-linux|libvulkan|libpthread|libdl|librt' \
   | xargs -r -I{} cp {} "$root/.devbin/lib/"
+# Built-in scenes that load a model from a Debian package (two_cylinder_engine: assimp-testmodels)
+# name it by its absolute path; the GPU machine has no such package, so the files travel in
+# .devbin/sysroot/ and prologue.sh puts them at the same paths there.
+grep -ho '"gltf": *"/[^"]*"' "$root"/scenes/*/*.json | sed 's/.*"\(\/[^"]*\)"/\1/' | sort -u |
+  while read -r model; do
+    mkdir -p "$root/.devbin/sysroot$(dirname "$model")"
+    cp "$model" "$root/.devbin/sysroot$model"
+  done
 du -sh "$root/.devbin"
 git -C "$root" rev-parse --short HEAD > "$root/.devbin/commit" 2>/dev/null || true

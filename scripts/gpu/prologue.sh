@@ -3,6 +3,8 @@
 # their libraries.
 for f in .gl/*.deb; do dpkg -x "$f" /; done
 ldconfig
+# Models that built-in scenes name by absolute path (package.sh).
+if [ -d .devbin/sysroot ]; then cp -r .devbin/sysroot/. /; fi
 export LD_LIBRARY_PATH=$PWD/.devbin/lib
 export LUMINA_SHADER_DIR=$PWD/.devbin/shaders
 export LUMINA_SOURCE_DIR=$PWD

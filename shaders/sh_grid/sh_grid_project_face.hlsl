@@ -3,9 +3,9 @@
 // the face's texels of L(d) Y_k(d) dOmega, where dOmega is the texel's exact solid angle
 // (shCubeTexelSolidAngle), into the face's slot of the partial sums. L is what the bake rendered
 // (emission and shadowed direct light, the sky where no surface is) plus, when the bake asks for
-// a bounce, albedo / pi x the grid's own irradiance at the surface seen (the previous sweep's:
-// one more bounce per sweep). One group per face: each thread sums a strided set of texels in
-// registers, then one groupshared tree reduction. (Summing into groupshared memory texel by texel
+// a bounce, albedo / pi x the grid's own irradiance at the surface seen (as the sweep began,
+// so each sweep adds exactly one bounce). One group per face: each thread sums a strided set of
+// texels in registers, then one groupshared tree reduction. (Summing into groupshared memory texel by texel
 // made the projection 86 ms a bake frame at the high preset on the lent H200.)
 #include "common/bindings.hlsli"
 #include "sh_grid/sh_grid_shared.h"
@@ -15,6 +15,7 @@ Texture2D<float4> gRadiance : register(t0); // the face: linear radiance
 Texture2D<float4> gAlbedo : register(t1);   // the face's GBuffer (read for the bounce)
 Texture2D<float4> gNormal : register(t2);
 Texture2D<float4> gPosition : register(t3);
+// The bounce source: the grid as this sweep began.
 StructuredBuffer<float4> gProbeCoefficients : register(t4);
 RWStructuredBuffer<float4> gPartials : register(u0); // [face * 9 + k]: rgb
 LUMINA_PUSH_CONSTANTS(ShGridFaceConstants, gFace);

@@ -1,10 +1,10 @@
-#include <gtest/gtest.h>
+#include "gi/core/timing_table.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <sstream>
-
-#include "gi/core/timing_table.h"
 
 namespace lumina::gi {
 namespace {
@@ -43,7 +43,8 @@ TEST(TimingTable, SkipsWarmupAndAggregatesPerPass) {
 
 TEST(TimingTable, NestedRegionsDoNotAddToTheFrameTotal) {
     TimingTable table;
-    table.addFrame({timer("gi", 5.0, 0, 50), timer("gi: trace", 3.0, 10, 40), timer("composite", 1.0, 50, 60)});
+    table.addFrame(
+        {timer("gi", 5.0, 0, 50), timer("gi: trace", 3.0, 10, 40), timer("composite", 1.0, 50, 60)});
     EXPECT_DOUBLE_EQ(table.medianFrameMs(), 6.0);
 }
 
@@ -61,7 +62,24 @@ TEST(TimingTable, PrintsAndWritesJson) {
     const std::string json((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
     EXPECT_NE(json.find("\"medianMs\": 1.5"), std::string::npos);
     EXPECT_NE(json.find("\"device\": \"test\""), std::string::npos);
+    EXPECT_NE(json.find("\"kind\": \"nothing to run\""), std::string::npos);
     std::filesystem::remove(path);
+}
+
+// `bench --verify-skips` forces only reuse skips; the kind must survive the aggregation.
+TEST(TimingTable, KeepsReuseSkipsApartFromNothingToRun) {
+    TimingTable table;
+    table.addFrame({}, {{"sun shadows", "unchanged since frame 0", SkipKind::Reuse}});
+    table.addFrame({}, {{"sun shadows", "unchanged since frame 0", SkipKind::Reuse}});
+    table.addFrame({}, {{"sun shadows", "unchanged since frame 0", SkipKind::NothingToRun}});
+    const std::vector<SkipCount> skips = table.skips();
+    ASSERT_EQ(skips.size(), 2u);
+    const auto reuse = std::ranges::find(skips, SkipKind::Reuse, &SkipCount::kind);
+    ASSERT_NE(reuse, skips.end());
+    EXPECT_EQ(reuse->frames, 2u);
+    const auto none = std::ranges::find(skips, SkipKind::NothingToRun, &SkipCount::kind);
+    ASSERT_NE(none, skips.end());
+    EXPECT_EQ(none->frames, 1u);
 }
 
 } // namespace

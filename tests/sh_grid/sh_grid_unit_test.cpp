@@ -105,16 +105,41 @@ TEST(ShGridSchedule, ProbesNearAChangeGoFirstAndTheRestOweOneBake) {
     schedule.changed({glm::vec3(3.4f), glm::vec3(3.6f)}, 0.5f);
     EXPECT_EQ(schedule.dirtyProbes(), 1u);
     EXPECT_EQ(schedule.owedBakes(), 3u + 63u);
+    // The dirty probe's first two sweeps are its alone (a batch never spans two sweeps).
     const std::vector<uint32_t> first = schedule.next(2);
-    ASSERT_EQ(first.size(), 2u);
-    EXPECT_EQ(first[0], 63u);
+    ASSERT_EQ(first, std::vector<uint32_t>{63u});
     EXPECT_EQ(schedule.dirtyProbes(), 0u);
     uint32_t frames = 1;
     while (!schedule.idle()) {
         schedule.next(2);
         ++frames;
     }
-    EXPECT_EQ(frames, 33u); // 66 bakes, 2 a frame
+    EXPECT_EQ(frames, 34u); // 1 + 1, then the last sweep's 64 bakes 2 a frame
+}
+
+TEST(ShGridSchedule, EachSweepBeginsOnceAndNoBatchSpansTwo) {
+    ShGridSchedule schedule(cube(2), 3); // 8 probes, 3 sweeps
+    std::vector<bool> began;
+    std::vector<size_t> sizes;
+    while (!schedule.idle()) {
+        sizes.push_back(schedule.next(3).size());
+        began.push_back(schedule.batchBeganSweep());
+    }
+    // Each sweep: 3 + 3 + 2 probes, the third batch cut short rather than take the next sweep's.
+    EXPECT_EQ(sizes, (std::vector<size_t>{3, 3, 2, 3, 3, 2, 3, 3, 2}));
+    EXPECT_EQ(began, (std::vector<bool>{true, false, false, true, false, false, true, false, false}));
+    EXPECT_TRUE(schedule.next(3).empty());
+    EXPECT_FALSE(schedule.batchBeganSweep()); // nothing owed: no copy either
+
+    // A change during a sweep begins another, which reads the grid as it stands.
+    schedule.changed({glm::vec3(0.4f), glm::vec3(0.6f)}, 0.1f);
+    ASSERT_EQ(schedule.next(1), std::vector<uint32_t>{0u});
+    EXPECT_TRUE(schedule.batchBeganSweep());
+    schedule.next(1);
+    EXPECT_TRUE(schedule.batchBeganSweep()); // probe 0's second sweep
+    schedule.changed({glm::vec3(1.4f), glm::vec3(1.6f)}, 0.1f);
+    schedule.next(1);
+    EXPECT_TRUE(schedule.batchBeganSweep()); // probe 7 now owes more than probe 0 does
 }
 
 TEST(ShGridFile, RoundTripsAndRejectsBadFiles) {
