@@ -44,8 +44,13 @@ bool nothingToRun(const SkipCount& skip) {
     return skip.kind != SkipKind::Reuse;
 }
 
-double settledOrWholeMs(const TechniqueRun& run) {
-    return run.settledFrameMs ? *run.settledFrameMs : run.frameMs;
+// Median GPU ms of `run`'s frames from `first` (0-based) on. Both runs of a check are measured
+// over the same frames, those after the baseline settled: the forced run may settle later or never,
+// and its whole run's median against the baseline's settled one made savings come out negative.
+double medianFrom(const TechniqueRun& run, uint32_t first) {
+    const size_t start = std::min<size_t>(first, run.frameMsEach.size());
+    std::vector<double> frames(run.frameMsEach.begin() + std::ptrdiff_t(start), run.frameMsEach.end());
+    return frames.empty() ? run.frameMs : median(std::move(frames));
 }
 
 } // namespace
@@ -99,8 +104,9 @@ std::vector<SkipCheck> checkSkips(rhi::IDevice& device, PipelineCache& pipelines
                     check.framesSkippedForced = std::max(check.framesSkippedForced, skip.frames);
                 }
             }
-            check.frameMs = settledOrWholeMs(baseline);
-            check.forcedFrameMs = settledOrWholeMs(forced);
+            const uint32_t first = baseline.settledAfterFrame.value_or(0);
+            check.frameMs = medianFrom(baseline, first);
+            check.forcedFrameMs = medianFrom(forced, first);
             check.imageRelMse = measure::relMse(baseline.finalImage, forced.finalImage);
         }
         checks.push_back(std::move(check));

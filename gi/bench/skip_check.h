@@ -34,8 +34,8 @@ struct SkipCheck {
     uint32_t framesSkipped = 0;       // in the baseline
     bool forceable = false;           // false: nothing to run; the fields below are then empty
     uint32_t framesSkippedForced = 0; // the group's skips left in the forced run (0: forcing took)
-    double frameMs = 0.0;             // the baseline's settled median frame (else its whole run's)
-    double forcedFrameMs = 0.0;       // the same of the forced run
+    double frameMs = 0.0;             // the baseline's median frame after it settled (else all frames)
+    double forcedFrameMs = 0.0;       // the forced run's median over the same frames
     double imageRelMse = 0.0;         // forced run's final image against the baseline's
     double savedMs() const { return forcedFrameMs - frameMs; }
     bool withinTolerance() const { return !forceable || imageRelMse <= kSkipImageTolerance; }

@@ -80,6 +80,7 @@ void runFrames(rhi::IDevice& device, PipelineCache& pipelines, const RunRequest&
     }
     run.frames = request.frames;
     run.frameMs = table.medianFrameMs();
+    run.frameMsEach = table.frameTotals();
     run.passes = table.passes();
     run.skips = table.skips();
     if (settledTable.recordedFrames() != 0) {

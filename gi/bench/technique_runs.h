@@ -50,6 +50,7 @@ struct TechniqueRun {
     uint32_t frames = 0;
     uint32_t samplesPerFrame = 0; // path tracer only
     double frameMs = 0.0;         // median GPU time of a frame
+    std::vector<double> frameMsEach{}; // every frame's GPU time, in order
     std::vector<PassTiming> passes{};
     // The frame after which the technique's per-frame work stopped changing: lumen's surface
     // cache converged (radiosity stops), 1 for direct (frame 1 draws the shadow maps) and the

@@ -40,6 +40,8 @@ public:
     std::vector<PassTiming> passes() const;
     std::vector<SkipCount> skips() const;
     double medianFrameMs() const;
+    // Each recorded frame's total (the sum of its top-level passes), in order.
+    const std::vector<double>& frameTotals() const { return frameTotals_; }
     // The sum of the top-level passes of the last frame added; 0 before any.
     double lastFrameMs() const { return frameTotals_.empty() ? 0.0 : frameTotals_.back(); }
     uint32_t recordedFrames() const { return recordedFrames_; }
