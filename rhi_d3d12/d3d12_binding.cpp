@@ -169,19 +169,14 @@ WrittenBindingSet writeBindingSet(ID3D12Device* device, const BindingLayout& lay
     }
     WrittenBindingSet written;
     DescriptorTable viewTable;
-    DescriptorTable samplerTable;
     if (!layout.resourceRanges().empty()) {
         viewTable = views.allocate(static_cast<uint32_t>(layout.resourceRanges().size()));
         written.resources = viewTable.gpu;
     }
-    if (!layout.samplerRanges().empty()) {
-        samplerTable = samplers.allocate(static_cast<uint32_t>(layout.samplerRanges().size()));
-        written.samplers = samplerTable.gpu;
-    }
+    // Samplers are gathered first and written as one table the list may already hold.
+    std::vector<D3D12_CPU_DESCRIPTOR_HANDLE> samplerSources(layout.samplerRanges().size());
     const UINT viewIncrement =
         device->GetDescriptorHandleIncrementSize(D3D12_DESCRIPTOR_HEAP_TYPE_CBV_SRV_UAV);
-    const UINT samplerIncrement =
-        device->GetDescriptorHandleIncrementSize(D3D12_DESCRIPTOR_HEAP_TYPE_SAMPLER);
 
     const auto& items = layout.desc().items;
     for (size_t i = 0; i < items.size(); ++i) {
@@ -234,13 +229,14 @@ WrittenBindingSet writeBindingSet(ID3D12Device* device, const BindingLayout& lay
             break;
         }
         if (item->type == rhi::BindingType::Sampler) {
-            device->CopyDescriptorsSimple(1,
-                                          {samplerTable.cpu.ptr + size_t(layout.slot(i)) * samplerIncrement},
-                                          source, D3D12_DESCRIPTOR_HEAP_TYPE_SAMPLER);
+            samplerSources[layout.slot(i)] = source;
         } else {
             device->CopyDescriptorsSimple(1, {viewTable.cpu.ptr + size_t(layout.slot(i)) * viewIncrement},
                                           source, D3D12_DESCRIPTOR_HEAP_TYPE_CBV_SRV_UAV);
         }
+    }
+    if (!samplerSources.empty()) {
+        written.samplers = samplers.tableOf(device, samplerSources).gpu;
     }
     return written;
 }

@@ -111,12 +111,33 @@ DescriptorTable DescriptorTableAllocator::allocate(uint32_t count) {
     return {heap_.cpuHandle(index), heap_.gpuHandle(index), index};
 }
 
+DescriptorTable DescriptorTableAllocator::tableOf(ID3D12Device* device,
+                                                  const std::vector<D3D12_CPU_DESCRIPTOR_HANDLE>& sources) {
+    std::vector<size_t> key;
+    key.reserve(sources.size());
+    for (const D3D12_CPU_DESCRIPTOR_HANDLE& source : sources) {
+        key.push_back(source.ptr);
+    }
+    if (const auto found = written_.find(key); found != written_.end()) {
+        return found->second;
+    }
+    const DescriptorTable table = allocate(static_cast<uint32_t>(sources.size()));
+    const D3D12_DESCRIPTOR_HEAP_TYPE type = heap_.type();
+    const UINT increment = device->GetDescriptorHandleIncrementSize(type);
+    for (size_t i = 0; i < sources.size(); ++i) {
+        device->CopyDescriptorsSimple(1, {table.cpu.ptr + i * increment}, sources[i], type);
+    }
+    written_.emplace(std::move(key), table);
+    return table;
+}
+
 void DescriptorTableAllocator::reset() {
     for (uint32_t page : pages_) {
         heap_.releasePage(page);
     }
     pages_.clear();
     used_ = 0;
+    written_.clear();
 }
 
 } // namespace lumina::d3d12

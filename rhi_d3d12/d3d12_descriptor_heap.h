@@ -13,6 +13,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <map>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -56,6 +57,7 @@ public:
 
     ID3D12DescriptorHeap* heap() const { return heap_.Get(); }
     uint32_t pageSize() const { return pageSize_; }
+    D3D12_DESCRIPTOR_HEAP_TYPE type() const { return type_; }
     // Throws rhi::Error when every page is held by a command list that has not been reset.
     uint32_t acquirePage();
     void releasePage(uint32_t page);
@@ -92,13 +94,19 @@ public:
     DescriptorTableAllocator& operator=(const DescriptorTableAllocator&) = delete;
 
     DescriptorTable allocate(uint32_t count);
+    // A table holding exactly `sources` (CPU-only descriptors, in table order): the one this list
+    // already wrote for the same sources since its last reset(), else a new one. For samplers,
+    // which are few and long-lived: a frame of `city` binds one sampler table for each of its
+    // thousands of capture draws, more than the 2048 samplers a shader-visible heap may hold.
+    DescriptorTable tableOf(ID3D12Device* device, const std::vector<D3D12_CPU_DESCRIPTOR_HANDLE>& sources);
     // Returns every page; only once the GPU no longer reads them.
     void reset();
 
 private:
     ShaderVisibleDescriptorHeap& heap_;
     std::vector<uint32_t> pages_;
-    uint32_t used_ = 0; // descriptors used in pages_.back()
+    uint32_t used_ = 0;                                      // descriptors used in pages_.back()
+    std::map<std::vector<size_t>, DescriptorTable> written_; // tableOf's tables, by source pointers
 };
 
 } // namespace lumina::d3d12

@@ -16,8 +16,12 @@ namespace lumina::d3d12 {
 
 namespace {
 
-// Shader-visible heap sizes. 2048 samplers is D3D12's limit for a shader-visible sampler heap.
-constexpr uint32_t kShaderVisibleViews = 65536;
+// Shader-visible heap sizes. 2048 samplers is D3D12's limit for a shader-visible sampler heap;
+// 1,000,000 views is resource binding tier 1's for a view heap (976 pages of 1024 stay under it).
+// A frame of `city` binds views for thousands of card-capture passes: 65536 did not hold its first
+// frame (`RealScenesGpu` on D3D12 under Wine), while identical sampler tables are shared
+// (DescriptorTableAllocator::tableOf).
+constexpr uint32_t kShaderVisibleViews = 976 * 1024;
 constexpr uint32_t kViewPageSize = 1024;
 constexpr uint32_t kShaderVisibleSamplers = D3D12_MAX_SHADER_VISIBLE_SAMPLER_HEAP_SIZE;
 constexpr uint32_t kSamplerPageSize = 64;
