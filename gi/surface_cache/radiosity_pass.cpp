@@ -102,7 +102,7 @@ void RadiosityPass::record(gi::FrameContext& frame, const AtlasSurfaceBindings& 
                          {LUMINA_LINEAR_GROUP_SIZE, 1});
 
     gi::ComputePass filter = frame.compute(kFilterPassName, "surface_cache/radiosity.filter");
-    bindSurfaces(filter)
+    sdf_.bindForTracing(bindSurfaces(filter)) // neighbours are blended only where in sight
         .read(12, traced_)
         .write(0, filtered_)
         .dispatchThreads(tiles.threadsX(probesPerTile), tiles.threadsY(probesPerTile),

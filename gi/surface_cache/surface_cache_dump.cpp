@@ -134,8 +134,8 @@ std::vector<std::filesystem::path> dumpSurfaceCache(rhi::IDevice& device, const 
                 continue;
             }
             const gpu::RadiosityProbe& p = probes[i];
-            const bool valid = p.normalAndValid.w != 0.0f;
-            const glm::vec3 n(p.normalAndValid.x, p.normalAndValid.y, p.normalAndValid.z);
+            const bool valid = p.normalAndTexel.w != 0.0f;
+            const glm::vec3 n(p.normalAndTexel.x, p.normalAndTexel.y, p.normalAndTexel.z);
             probeImage.setRgb(
                 x, y,
                 valid ? image::Rgb{shIrradiance(p.r, n), shIrradiance(p.g, n), shIrradiance(p.b, n)}

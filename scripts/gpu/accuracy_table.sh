@@ -4,7 +4,8 @@
 # direct-only image and lumen at every preset after convergence (what `lumina render` does without
 # --frames), all at LUMINA_SIZE (default 256x256); then `lumina compare` of each against the
 # reference. LUMINA_TECHNIQUES (default lumen) names the GI techniques measured the same way.
-# Prints one markdown row per scene and technique: relMSE of direct-only, and for each preset the
+# An animated scene is measured at its first pose, held still (--animation-frame 0), the pose its
+# reference shows. Prints one markdown row per scene and technique: relMSE of direct-only, and for each preset the
 # technique's relMSE, its ratio to direct-only's and its mean radiance over the reference's. Writes
 # accuracy.txt (every compare in full) and accuracy.md (the table) under $OUT.
 set -uo pipefail
@@ -40,16 +41,20 @@ done
 echo "$header |" >"$out/accuracy.md"
 echo "$rule|" >>"$out/accuracy.md"
 for scene in $scenes; do
+  pose=""
+  if $lumina info "$scene" 2>/dev/null | grep '^  animation' | grep -qv ' none$'; then
+    pose="--animation-frame 0"
+  fi
   ref=/tmp/ref_$scene.exr
   timeout 600 $lumina reference "$scene" --size "$size" --spp "$spp" --pixel-centres --out "$ref" 2>&1 | tail -1 >>"$out/accuracy.txt"
-  timeout 120 $lumina render "$scene" --technique direct --size "$size" --frames 1 --exr "/tmp/direct_$scene.exr" \
+  timeout 120 $lumina render "$scene" --technique direct --size "$size" --frames 1 $pose --exr "/tmp/direct_$scene.exr" \
     --out "/tmp/direct_$scene.png" >/dev/null 2>&1
   read -r directRel _ _ < <(figures "$ref" "/tmp/direct_$scene.exr")
   for technique in $techniques; do
     row="| \`$scene\` | $technique | $directRel"
     for preset in $presets; do
       exr=/tmp/${technique}_${scene}_$preset.exr
-      timeout 600 $lumina render "$scene" --technique "$technique" --preset "$preset" --size "$size" --exr "$exr" \
+      timeout 600 $lumina render "$scene" --technique "$technique" --preset "$preset" --size "$size" $pose --exr "$exr" \
         --out "/tmp/${technique}_${scene}_$preset.png" 2>&1 | grep -E '^(frames|surface)' >>"$out/accuracy.txt"
       read -r rel mean refMean < <(figures "$ref" "$exr")
       echo "$scene $technique $preset: relMSE $rel (direct $directRel), mean $mean (reference $refMean)" |

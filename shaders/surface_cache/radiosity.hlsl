@@ -83,7 +83,7 @@ RadiosityProbe emptyProbe() {
     p.r = float4(0.0f, 0.0f, 0.0f, 0.0f);
     p.g = p.r;
     p.b = p.r;
-    p.normalAndValid = p.r;
+    p.normalAndTexel = p.r;
     return p;
 }
 
@@ -101,6 +101,7 @@ float3 finiteOrZero(float3 v) {
     // block straddling the edge of an object standing on the surface must not start its rays
     // inside that object); the first captured one when none does.
     uint2 texel = uint2(0, 0);
+    uint slot = 0u;
     uint card = LUMINA_NO_CARD;
     float3 n = float3(0.0f, 0.0f, 1.0f);
     float3 world = float3(0.0f, 0.0f, 0.0f);
@@ -117,6 +118,7 @@ float3 finiteOrZero(float3 v) {
         float distance = sdfSampleGlobal(candidateWorld + gConstants.originOffset * candidateNormal);
         if (card == LUMINA_NO_CARD || distance > bestDistance) {
             texel = candidate;
+            slot = i;
             card = candidateCard;
             n = candidateNormal;
             world = candidateWorld;
@@ -190,18 +192,44 @@ float3 finiteOrZero(float3 v) {
     result.r = shR;
     result.g = shG;
     result.b = shB;
-    result.normalAndValid = float4(n, 1.0f);
+    result.normalAndTexel = float4(n, float(slot + 1u));
     // Refinement (radiosity_schedule.h): the mean of this trace and the history, weighted
     // 1 / (k + 1) for the k-th pass, so that rotated ray sets average out; a convex combination,
     // so it never adds energy.
     float blend = gConstants.temporalBlend;
     RadiosityProbe history = gProbesOut[probeIndex(probe)];
-    if (blend < 1.0f && history.normalAndValid.w != 0.0f) {
+    if (blend < 1.0f && history.normalAndTexel.w != 0.0f) {
         result.r = lerp(history.r, result.r, blend);
         result.g = lerp(history.g, result.g, blend);
         result.b = lerp(history.b, result.b, blend);
     }
     gProbesOut[probeIndex(probe)] = result;
+}
+
+// Where a traced probe's rays started: its texel (kProbeTexelOrder[w - 1] of its block) lifted
+// off the surface as the trace lifts it.
+float3 probeRayOrigin(uint2 probe, RadiosityProbe traced) {
+    uint2 texel = probe * LUMINA_RADIOSITY_PROBE_SPACING + kProbeTexelOrder[uint(traced.normalAndTexel.w) - 1u];
+    float3 world = atlasTexelWorldPosition(gCards[atlasTexelCard(texel)], texel);
+    return world + gConstants.originOffset * sdfGlobalCascadeScaleAt(world) * traced.normalAndTexel.xyz;
+}
+
+// Sphere-traces the global SDF from one probe's ray origin to another's: a neighbour on the same
+// card and plane may still stand behind a thin object on that plane (a door standing on a floor
+// card that runs through two rooms), and blending it would carry its light through the object.
+// Both origins float 2 global voxels off the surface, above its hit threshold, so the surface
+// they share never blocks; running out of steps counts as blocked.
+#define LUMINA_RADIOSITY_FILTER_STEPS 32u
+bool probeSeesProbe(float3 from, float3 to) {
+    float3 d = to - from;
+    float distance = length(d);
+    if (distance <= 0.0f) {
+        return true;
+    }
+    SdfTraceParams params = sdfDefaultTraceParams(distance);
+    params.maxSteps = LUMINA_RADIOSITY_FILTER_STEPS;
+    SdfHit hit = sdfTraceGlobal(from, d / distance, 0.0f, params);
+    return sdfIsMiss(hit) && hit.ids.w < params.maxSteps;
 }
 
     [numthreads(LUMINA_LINEAR_GROUP_SIZE, 1, 1)] void filter(uint3 id
@@ -211,11 +239,12 @@ float3 finiteOrZero(float3 v) {
         return;
     }
     RadiosityProbe centre = gProbesIn[probeIndex(probe)];
-    if (centre.normalAndValid.w == 0.0f) {
+    if (centre.normalAndTexel.w == 0.0f) {
         gProbesOut[probeIndex(probe)] = centre;
         return;
     }
     uint card = atlasTexelCard(probe * LUMINA_RADIOSITY_PROBE_SPACING);
+    float3 origin = probeRayOrigin(probe, centre);
     RadiosityProbe sum = centre;
     float count = 1.0f;
     int2 offsets[4] = {int2(-1, 0), int2(1, 0), int2(0, -1), int2(0, 1)};
@@ -227,9 +256,10 @@ float3 finiteOrZero(float3 v) {
         }
         RadiosityProbe neighbour = gProbesIn[probeIndex(uint2(q))];
         // Same card and about the same plane: never blend light across an edge or a crease.
-        bool similar = neighbour.normalAndValid.w != 0.0f &&
-                       dot(neighbour.normalAndValid.xyz, centre.normalAndValid.xyz) > gConstants.filterMinCosine &&
-                       atlasTexelCard(uint2(q) * LUMINA_RADIOSITY_PROBE_SPACING) == card;
+        bool similar = neighbour.normalAndTexel.w != 0.0f &&
+                       dot(neighbour.normalAndTexel.xyz, centre.normalAndTexel.xyz) > gConstants.filterMinCosine &&
+                       atlasTexelCard(uint2(q) * LUMINA_RADIOSITY_PROBE_SPACING) == card &&
+                       probeSeesProbe(origin, probeRayOrigin(uint2(q), neighbour));
         if (similar) {
             sum.r += neighbour.r;
             sum.g += neighbour.g;
@@ -240,7 +270,7 @@ float3 finiteOrZero(float3 v) {
     sum.r /= count;
     sum.g /= count;
     sum.b /= count;
-    sum.normalAndValid = centre.normalAndValid;
+    sum.normalAndTexel = centre.normalAndTexel;
     gProbesOut[probeIndex(probe)] = sum;
 }
 
@@ -262,7 +292,7 @@ float shIrradiance(float4 sh, float3 n) {
     float4 normal = gSurface.Load(int4(texel, 0, 0));
     RadiosityProbe probe = gProbesIn[probeIndex(texel / LUMINA_RADIOSITY_PROBE_SPACING)];
     float3 irradiance = float3(0.0f, 0.0f, 0.0f);
-    if (normal.a != 0.0f && probe.normalAndValid.w != 0.0f) {
+    if (normal.a != 0.0f && probe.normalAndTexel.w != 0.0f) {
         float3 n = normalize(normal.xyz);
         irradiance = finiteOrZero(
             float3(shIrradiance(probe.r, n), shIrradiance(probe.g, n), shIrradiance(probe.b, n)));

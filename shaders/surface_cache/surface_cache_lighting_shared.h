@@ -154,12 +154,13 @@ LUMINA_STATIC_ASSERT_OFFSET(RadiosityConstants, originOffset, 48);
 
 // A radiosity probe: L1 spherical harmonics of its incoming radiance, one float4 per colour
 // channel, (L00, L1 along x, y, z) of the real SH basis, and its surface normal. A probe on no
-// surface is all zero (normalAndValid.w = 0).
+// surface is all zero (normalAndTexel.w = 0).
 struct RadiosityProbe {
     float4 r;
     float4 g;
     float4 b;
-    float4 normalAndValid; // xyz: unit world normal of the probe's texel; w: 1 on a surface
+    float4 normalAndTexel; // xyz: unit world normal of the probe's texel; w: 0 where no surface, else 1 + the
+                           // index of that texel in its block's kProbeTexelOrder (radiosity.hlsl)
 };
 LUMINA_STATIC_ASSERT_SIZE(RadiosityProbe, 64);
 

@@ -30,8 +30,8 @@ void radiosityProbes(uint3 id : SV_DispatchThreadID) {
     }
     const RadiosityProbe probe = gProbes[id.y * gVisualise.size.x + id.x];
     float3 color = float3(0.0, 0.0, 0.0);
-    if (probe.normalAndValid.w != 0.0) {
-        const float3 n = normalize(probe.normalAndValid.xyz);
+    if (probe.normalAndTexel.w != 0.0) {
+        const float3 n = normalize(probe.normalAndTexel.xyz);
         const float3 irradiance =
             float3(shL1Irradiance(probe.r, n), shL1Irradiance(probe.g, n), shL1Irradiance(probe.b, n));
         color = display(gVisualise.mode == LUMINA_VISUALISE_NORMAL ? float4(n, 1.0)
