@@ -258,8 +258,12 @@ bool probeSeesProbe(float3 from, float3 to) {
         // Same card and about the same plane: never blend light across an edge or a crease.
         bool similar = neighbour.normalAndTexel.w != 0.0f &&
                        dot(neighbour.normalAndTexel.xyz, centre.normalAndTexel.xyz) > gConstants.filterMinCosine &&
-                       atlasTexelCard(uint2(q) * LUMINA_RADIOSITY_PROBE_SPACING) == card &&
-                       probeSeesProbe(origin, probeRayOrigin(uint2(q), neighbour));
+                       atlasTexelCard(uint2(q) * LUMINA_RADIOSITY_PROBE_SPACING) == card;
+        // A separate test, not one more &&: HLSL before 2021 evaluates both sides, and an empty
+        // neighbour (w = 0) has no texel to find its origin on.
+        if (similar) {
+            similar = probeSeesProbe(origin, probeRayOrigin(uint2(q), neighbour));
+        }
         if (similar) {
             sum.r += neighbour.r;
             sum.g += neighbour.g;
