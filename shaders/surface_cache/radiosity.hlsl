@@ -91,22 +91,64 @@ float3 finiteOrZero(float3 v) {
     return (any(isnan(v)) || any(isinf(v))) ? float3(0.0f, 0.0f, 0.0f) : v;
 }
 
+// Free space a probe's rays need where they start, in voxels of the cascade there: below the
+// trace's hit threshold (0.1 voxel) every ray stops where it starts and the probe reads black. Near
+// a concave edge the global SDF's zero crossing runs up to a voxel in front of the true surface,
+// so an origin lifted two voxels off one wall can sit on the zero crossing of the wall beside it
+// (the last row of probes on a Cornell box's side wall, next to the back wall, read black).
+#define LUMINA_RADIOSITY_CLEARANCE_VOXELS 0.5f
+
+float originClearance(float3 origin) {
+    return LUMINA_RADIOSITY_CLEARANCE_VOXELS * sdfGlobalVoxelSizeAt(origin);
+}
+
+// A texel lifted off its surface: the offset is in finest global SDF voxels; where a coarser
+// cascade serves the texel, in its own.
+float3 liftedOrigin(float3 world, float3 n) {
+    return world + gConstants.originOffset * sdfGlobalCascadeScaleAt(world) * n;
+}
+
+// Pushes along the SDF's gradient a probe needs at most to reach its clearance: one from a
+// wall's zero crossing, two from next to a block's foot (the gradient there also leans into the
+// floor).
+#define LUMINA_RADIOSITY_CLEARANCE_PUSHES 3u
+
+// Where the rays of a probe on texel `world` start: lifted off the surface, then pushed along the
+// SDF's gradient until it has its clearance. A texel beside a block standing on it (a floor texel
+// at the block's foot) lifts into the block's zero crossing, up to a voxel inside; its gradient
+// leads out of the block on the texel's side. Origins deeper inside are buried
+// (atlasTexelBuried) and never traced: a push moves a voxel and a half at most, too little to
+// cross a wall from the side the texel faces.
+float3 probeRayOriginAt(float3 world, float3 n) {
+    float3 origin = liftedOrigin(world, n);
+    for (uint push = 0u; push < LUMINA_RADIOSITY_CLEARANCE_PUSHES; ++push) {
+        float distance = sdfSampleGlobal(origin);
+        float clearance = originClearance(origin);
+        if (distance >= clearance) {
+            break;
+        }
+        origin += (clearance - distance) * sdfGlobalNormal(origin);
+    }
+    return origin;
+}
+
 [numthreads(LUMINA_LINEAR_GROUP_SIZE, 1, 1)] void trace(uint3 id
                                   : SV_DispatchThreadID) {
     uint2 probe;
     if (!listedProbe(id.xy, probe)) {
         return;
     }
-    // The probe's texel: the first in kProbeTexelOrder whose ray origin lies in free space (a
-    // block straddling the edge of an object standing on the surface must not start its rays
-    // inside that object); the first captured one when none does.
+    // The probe's texel: the first in kProbeTexelOrder whose ray origin has the clearance its rays
+    // need (a block straddling the edge of an object standing on the surface must not start its
+    // rays inside that object, nor a block in a corner on the other wall's zero crossing); the
+    // clearest captured one when none does.
     uint2 texel = uint2(0, 0);
     uint slot = 0u;
     uint card = LUMINA_NO_CARD;
     float3 n = float3(0.0f, 0.0f, 1.0f);
     float3 world = float3(0.0f, 0.0f, 0.0f);
-    float bestDistance = -1e30f;
-    for (uint i = 0u; i < 16u && bestDistance < 0.0f; ++i) {
+    float bestClearance = -1e30f;
+    for (uint i = 0u; i < 16u && bestClearance < 0.0f; ++i) {
         uint2 candidate = probe * LUMINA_RADIOSITY_PROBE_SPACING + kProbeTexelOrder[i];
         float4 normal = gSurface.Load(int4(candidate, 0, 0));
         uint candidateCard = atlasTexelCard(candidate);
@@ -115,22 +157,22 @@ float3 finiteOrZero(float3 v) {
         }
         float3 candidateNormal = normalize(normal.xyz);
         float3 candidateWorld = atlasTexelWorldPosition(gCards[candidateCard], candidate);
-        float distance = sdfSampleGlobal(candidateWorld + gConstants.originOffset * candidateNormal);
-        if (card == LUMINA_NO_CARD || distance > bestDistance) {
+        float3 lifted = liftedOrigin(candidateWorld, candidateNormal);
+        float clearance = sdfSampleGlobal(lifted) - originClearance(lifted);
+        if (card == LUMINA_NO_CARD || clearance > bestClearance) {
             texel = candidate;
             slot = i;
             card = candidateCard;
             n = candidateNormal;
             world = candidateWorld;
-            bestDistance = distance;
+            bestClearance = clearance;
         }
     }
     if (card == LUMINA_NO_CARD || atlasTexelBuried(world, n, gConstants.originOffset)) {
         gProbesOut[probeIndex(probe)] = emptyProbe(); // its texels get no indirect light
         return;
     }
-    // The offset is in finest global SDF voxels; where a coarser cascade serves the texel, its own.
-    float3 origin = world + gConstants.originOffset * sdfGlobalCascadeScaleAt(world) * n;
+    float3 origin = probeRayOriginAt(world, n);
     // An orthonormal frame around n (Duff et al. 2017, branchless).
     float s = n.z >= 0.0f ? 1.0f : -1.0f;
     float a = -1.0f / (s + n.z);
@@ -207,11 +249,10 @@ float3 finiteOrZero(float3 v) {
 }
 
 // Where a traced probe's rays started: its texel (kProbeTexelOrder[w - 1] of its block) lifted
-// off the surface as the trace lifts it.
+// off the surface as the trace lifts it. Recomputed, not stored: the gradient's push is the same.
 float3 probeRayOrigin(uint2 probe, RadiosityProbe traced) {
     uint2 texel = probe * LUMINA_RADIOSITY_PROBE_SPACING + kProbeTexelOrder[uint(traced.normalAndTexel.w) - 1u];
-    float3 world = atlasTexelWorldPosition(gCards[atlasTexelCard(texel)], texel);
-    return world + gConstants.originOffset * sdfGlobalCascadeScaleAt(world) * traced.normalAndTexel.xyz;
+    return probeRayOriginAt(atlasTexelWorldPosition(gCards[atlasTexelCard(texel)], texel), traced.normalAndTexel.xyz);
 }
 
 // Sphere-traces the global SDF from one probe's ray origin to another's: a neighbour on the same

@@ -8,6 +8,8 @@
 #include "gi/pathtracer/path_tracer.h"
 #include "gi/scene/scene_loader.h"
 #include "gi/surface_cache/card_bvh.h"
+#include "rhi/transfer.h"
+#include "shaders/surface_cache/surface_cache_lighting_shared.h"
 #include "tests/rhi/gpu_test_fixture.h"
 #include "tests/surface_cache/surface_cache_harness.h"
 
@@ -32,7 +34,38 @@ struct CornellFigures {
     double meanReference = 0.0;
     uint32_t pixels = 0;
     uint32_t missing = 0; // surface pixels no card owns
+    uint32_t probes = 0;  // radiosity probes on the cards that face into the box
+    uint32_t blackProbes = 0;
 };
+
+// Radiosity probes on cards facing into the box whose trace found no light at all. Every point
+// inside sees lit walls, so none may be black. A probe whose ray origin lies on the zero crossing
+// of a wall beside its own (the last row of probes on a side wall, next to the back wall) read
+// black: every ray stopped where it started.
+void countBlackProbes(rhi::IDevice& device, const SurfaceCache& cache, CornellFigures& f) {
+    const std::vector<gpu::RadiosityProbe> probes =
+        rhi::readBufferAs<gpu::RadiosityProbe>(device, *cache.radiosity().tracedProbes());
+    const uint32_t perRow = cache.atlas().size() / LUMINA_RADIOSITY_PROBE_SPACING;
+    const glm::vec3 inside(278.0f, 274.0f, 280.0f); // the box's centre (mm)
+    for (const gpu::SurfaceCard& card : cache.cards().cards()) {
+        const glm::vec3 centre =
+            0.5f * (glm::vec3(card.boundsMinAndFlags) + glm::vec3(card.boundsMaxAndInstance));
+        if (card.atlasRect.z == 0 || glm::dot(glm::vec3(card.normalAndPadding), inside - centre) <= 0.0f) {
+            continue;
+        }
+        const glm::uvec4 rect = card.atlasRect / LUMINA_RADIOSITY_PROBE_SPACING;
+        for (uint32_t y = rect.y; y < rect.y + rect.w; ++y) {
+            for (uint32_t x = rect.x; x < rect.x + rect.z; ++x) {
+                const gpu::RadiosityProbe& probe = probes[size_t(y) * perRow + x];
+                if (probe.normalAndTexel.w == 0.0f) {
+                    continue; // no surface, or a buried one
+                }
+                ++f.probes;
+                f.blackProbes += probe.r.x + probe.g.x + probe.b.x <= 0.0f;
+            }
+        }
+    }
+}
 
 CornellFigures measure(rhi::IDevice& device, rhi::ShaderLibrary& shaders, const std::string& name,
                        const std::function<void(rhi::ICommandList&)>& submitAndWait) {
@@ -116,13 +149,14 @@ CornellFigures measure(rhi::IDevice& device, rhi::ShaderLibrary& shaders, const 
             ++f.pixels;
         }
     }
+    countBlackProbes(device, h.cache, f);
     f.relMse = sum / (3.0 * std::max(f.pixels, 1u));
     f.meanCache /= std::max(f.pixels, 1u);
     f.meanReference /= std::max(f.pixels, 1u);
     std::printf("%s: %u updates, %u surface pixels (%u without a card), relMSE %.4f, mean radiance %.4f "
-                "(path tracer %.4f, %u spp, mean relative standard error %.4f)\n",
+                "(path tracer %.4f, %u spp, mean relative standard error %.4f); %u of %u probes black\n",
                 name.c_str(), updates, f.pixels, f.missing, f.relMse, f.meanCache, f.meanReference,
-                kReferenceSamples, reference.meanRelativeStandardError);
+                kReferenceSamples, reference.meanRelativeStandardError, f.blackProbes, f.probes);
     h.timings.print(std::cout);
     return f;
 }
@@ -136,6 +170,8 @@ void expectNear(const CornellFigures& f, double meanTolerance, double relMseBoun
     EXPECT_TRUE(std::isfinite(f.relMse));
     EXPECT_NEAR(f.meanCache / f.meanReference, 1.0, meanTolerance);
     EXPECT_LT(f.relMse, relMseBound);
+    EXPECT_GT(f.probes, 1000u);
+    EXPECT_EQ(f.blackProbes, 0u);
 }
 
 // The point-light Cornell box: direct light through the shadow maps, radiosity for the rest.
