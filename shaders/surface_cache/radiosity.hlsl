@@ -258,8 +258,8 @@ float3 probeRayOrigin(uint2 probe, RadiosityProbe traced) {
 // Sphere-traces the global SDF from one probe's ray origin to another's: a neighbour on the same
 // card and plane may still stand behind a thin object on that plane (a door standing on a floor
 // card that runs through two rooms), and blending it would carry its light through the object.
-// Both origins float 2 global voxels off the surface, above its hit threshold, so the surface
-// they share never blocks; running out of steps counts as blocked.
+// Both origins start with half a voxel of clearance (probeRayOriginAt), above the hit threshold,
+// so the surface they share never blocks; running out of steps counts as blocked.
 #define LUMINA_RADIOSITY_FILTER_STEPS 32u
 bool probeSeesProbe(float3 from, float3 to) {
     float3 d = to - from;

@@ -42,11 +42,13 @@ struct CornellFigures {
 // inside sees lit walls, so none may be black. A probe whose ray origin lies on the zero crossing
 // of a wall beside its own (the last row of probes on a side wall, next to the back wall) read
 // black: every ray stopped where it started.
-void countBlackProbes(rhi::IDevice& device, const SurfaceCache& cache, CornellFigures& f) {
+void countBlackProbes(rhi::IDevice& device, const scene::Scene& scene, const SurfaceCache& cache,
+                      CornellFigures& f) {
     const std::vector<gpu::RadiosityProbe> probes =
         rhi::readBufferAs<gpu::RadiosityProbe>(device, *cache.radiosity().tracedProbes());
     const uint32_t perRow = cache.atlas().size() / LUMINA_RADIOSITY_PROBE_SPACING;
-    const glm::vec3 inside(278.0f, 274.0f, 280.0f); // the box's centre (mm)
+    const scene::Bounds bounds = scene.worldBounds();
+    const glm::vec3 inside = 0.5f * (bounds.min + bounds.max);
     for (const gpu::SurfaceCard& card : cache.cards().cards()) {
         const glm::vec3 centre =
             0.5f * (glm::vec3(card.boundsMinAndFlags) + glm::vec3(card.boundsMaxAndInstance));
@@ -149,7 +151,7 @@ CornellFigures measure(rhi::IDevice& device, rhi::ShaderLibrary& shaders, const 
             ++f.pixels;
         }
     }
-    countBlackProbes(device, h.cache, f);
+    countBlackProbes(device, h.scene, h.cache, f);
     f.relMse = sum / (3.0 * std::max(f.pixels, 1u));
     f.meanCache /= std::max(f.pixels, 1u);
     f.meanReference /= std::max(f.pixels, 1u);
