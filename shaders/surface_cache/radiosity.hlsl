@@ -113,6 +113,13 @@ float3 liftedOrigin(float3 world, float3 n) {
 // floor).
 #define LUMINA_RADIOSITY_CLEARANCE_PUSHES 3u
 
+// A later texel replaces the chosen one only with this much more clearance, as a fraction of the
+// clearance needed (1/64 of a voxel): along a wall's zero crossing the texels of a block have the
+// same clearance to the rounding of one trilinear sample, and the APIs round differently, so
+// without a margin a column of corner probes chose its texel by rounding (D3D12 and Vulkan chose
+// differently, and their probes' light differed by up to 0.5).
+#define LUMINA_RADIOSITY_CLEARANCE_TIE (1.0f / 32.0f)
+
 // Where the rays of a probe on texel `world` start: lifted off the surface, then pushed along the
 // SDF's gradient until it has its clearance. A texel beside a block standing on it (a floor texel
 // at the block's foot) lifts into the block's zero crossing, up to a voxel inside; its gradient
@@ -158,8 +165,9 @@ float3 probeRayOriginAt(float3 world, float3 n) {
         float3 candidateNormal = normalize(normal.xyz);
         float3 candidateWorld = atlasTexelWorldPosition(gCards[candidateCard], candidate);
         float3 lifted = liftedOrigin(candidateWorld, candidateNormal);
-        float clearance = sdfSampleGlobal(lifted) - originClearance(lifted);
-        if (card == LUMINA_NO_CARD || clearance > bestClearance) {
+        float needed = originClearance(lifted);
+        float clearance = sdfSampleGlobal(lifted) - needed;
+        if (card == LUMINA_NO_CARD || clearance > bestClearance + LUMINA_RADIOSITY_CLEARANCE_TIE * needed) {
             texel = candidate;
             slot = i;
             card = candidateCard;

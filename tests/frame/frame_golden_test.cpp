@@ -1,7 +1,8 @@
 // Goldens of the lumen and DDGI frames (docs/goldens.md, docs/gi_tests.md, docs/ddgi.md): cornell_box and
 // open_top_box at 64x64, low preset with probes every 8 pixels, after a fixed kFrames frames: every
 // screen-probe pass's output, every surface-cache layer (the atlas region the cards occupy, one
-// texel in kAtlasStep^2), and the final frame. Regenerate with
+// texel in kAtlasStep^2), and the final frame; the per-ray and per-probe-texel passes' outputs also
+// after kEarlyFrames (`*_frame2`), where D3D12 must match as closely as the rest. Regenerate with
 //   LUMINA_UPDATE_GOLDENS=1 ctest -L golden      (Debian 12's lavapipe only)
 //
 // Normalised as docs/goldens.md asks, so that one tolerance per kind of data serves both scenes:
@@ -52,15 +53,24 @@ constexpr GoldenTolerance kMaterial{.meanAbsError = 0.01, .percentile = 0.99, .p
 // change. The percentile is the unit range's: a cone-traced ray whose march ends one step
 // earlier on another driver relights a texel, and 1% of texels may differ by anything.
 constexpr GoldenTolerance kLighting{.meanAbsError = 0.001, .percentile = 0.99, .percentileError = 0.02};
-// The per-ray and per-probe-texel lighting on D3D12 under Wine (DXBC from vkd3d-shader,
-// docs/d3d12.md), against the same goldens. The APIs round differently by an ULP here and there;
-// the screen probes draw each frame's rays from PDFs built on the previous frame's radiance, so
-// after a few frames some rays land in a neighbouring PDF texel and hit something else. Measured
-// after kFrames on cornell_box: ray radiance mean 0.0014, 99th percentile 0.025; probe history
-// 99th percentile 0.047 (open_top_box stays within kLighting). The gather, the screen temporal
-// result and the frame, where those rays average out, keep kLighting on both APIs.
+// Frames before the per-ray and per-probe-texel lighting is read a first time: the second frame's
+// rays are drawn from PDFs built on one frame of radiance, before rounding has had frames to
+// move them (below), so on D3D12 the passes that trace, composite and filter rays are held to
+// kLighting there.
+constexpr uint32_t kEarlyFrames = 2;
+// The per-ray and per-probe-texel lighting after kFrames on D3D12 under Wine (DXBC from
+// vkd3d-shader, docs/d3d12.md), against the same goldens. The APIs round differently by an ULP
+// here and there (ray directions differ by 1e-6 from the first frame); the screen probes draw each
+// frame's rays from PDFs built on the previous frame's radiance, so frame by frame more rays land
+// in a neighbouring PDF texel and hit something else, and one ray may change by anything. Raw ray
+// radiance, D3D12 against Vulkan on cornell_box: no ray off by 0.01 after 2 frames, 2 after 4, 28
+// after 8, 49 after 12. At kFrames the golden's ray radiance was off by mean 0.0008 and 99th
+// percentile 0.016 at one commit and by 0.0023 and 0.069 two commits later, with the surface
+// cache equal to the half-float rounding both times: how far the rays have drifted depends on
+// where the PDFs happen to sit, so the bound is about twice the largest seen. The gather, the
+// screen temporal result and the frame, where those rays average out, keep kLighting on both APIs.
 constexpr GoldenTolerance kPerRayLightingD3d12{
-    .meanAbsError = 0.002, .percentile = 0.99, .percentileError = 0.06};
+    .meanAbsError = 0.005, .percentile = 0.99, .percentileError = 0.15};
 
 GoldenSpec spec(const std::string& scene, const std::string& target, GoldenTolerance tolerance,
                 float previewMin = 0.0f, float previewMax = 1.0f, const std::string& technique = "lumen") {
@@ -178,6 +188,50 @@ image::Image atlasView(const std::vector<glm::vec4>& texels, uint32_t atlasSize,
     return out;
 }
 
+// The screen probes' per-ray and per-probe-texel buffers of the frame last rendered, with the
+// entries of invalid (sky) probes zeroed.
+struct PerRayImages {
+    std::vector<gpu::ScreenProbe> probes;
+    image::Image rays, nearField, composite, history, filtered;
+};
+
+PerRayImages readPerRayImages(rhi::IDevice& device, const gi::ScreenProbeGather& gather) {
+    const gi::ScreenProbeResources& r = gather.resources();
+    const uint32_t gw = r.gridWidth, gh = r.gridHeight, current = gather.current();
+    PerRayImages out;
+    out.probes = rhi::readBufferAs<gpu::ScreenProbe>(device, *r.probes[current]);
+    const auto perRay = [&](const rhi::BufferHandle& buffer) {
+        return zeroInvalidProbes(
+            gi::probeRayImage(rhi::readBufferAs<gpu::float4>(device, *buffer), r.raysPerProbe, gw, gh),
+            out.probes, gw, gh);
+    };
+    const auto perTexel = [&](const rhi::BufferHandle& buffer) {
+        return zeroInvalidProbes(gi::probeMapImage(rhi::readBufferAs<gpu::float4>(device, *buffer), gw, gh),
+                                 out.probes, gw, gh);
+    };
+    out.rays = perRay(r.rayRadiance);
+    out.nearField = perRay(r.nearField);
+    out.composite = perTexel(r.frameRadiance);
+    out.history = perTexel(r.history[current]);
+    out.filtered = perTexel(r.filtered);
+    return out;
+}
+
+// Goldens of the per-ray images; `suffix` names the frame they were read after.
+void appendPerRayChecks(GoldenChecks& checks, const std::string& scene, const std::string& suffix,
+                        const PerRayImages& images, GoldenTolerance tolerance) {
+    checks.emplace_back(spec(scene, "near_field" + suffix, tolerance),
+                        lightingView(images.nearField, 1.0f, Alpha::Source));
+    checks.emplace_back(spec(scene, "ray_radiance" + suffix, tolerance),
+                        lightingView(images.rays, 1.0f, Alpha::Flag));
+    checks.emplace_back(spec(scene, "probe_composite" + suffix, tolerance),
+                        lightingView(images.composite, 1.0f, Alpha::Weight));
+    checks.emplace_back(spec(scene, "probe_history" + suffix, tolerance),
+                        lightingView(images.history, 1.0f, Alpha::Weight));
+    checks.emplace_back(spec(scene, "probe_filtered" + suffix, tolerance),
+                        lightingView(images.filtered, 1.0f, Alpha::Weight));
+}
+
 class FrameGoldenTest : public GpuTestFixture,
                         public ::testing::WithParamInterface<std::tuple<rhi::Api, std::string>> {
 protected:
@@ -189,57 +243,47 @@ TEST_P(FrameGoldenTest, ScreenProbePassesSurfaceCacheLayersAndFrameMatchTheirGol
     const std::string name = std::get<1>(GetParam());
     FrameHarness h(device(), shaders(), scene::loadScene(name),
                    {.width = kSize, .height = kSize, .probeSpacing = kProbeSpacing});
-    h.render(kFrames);
-
     const gi::ScreenProbeGather& gather = h.lumen().screenProbes();
     const gi::ScreenProbeResources& r = gather.resources();
-    const uint32_t gw = r.gridWidth, gh = r.gridHeight, current = gather.current();
-    const auto probes = rhi::readBufferAs<gpu::ScreenProbe>(device(), *r.probes[current]);
-    const auto perTexel = [&](const rhi::BufferHandle& buffer) {
-        return zeroInvalidProbes(gi::probeMapImage(rhi::readBufferAs<gpu::float4>(device(), *buffer), gw, gh),
-                                 probes, gw, gh);
-    };
-    const image::Image rays = zeroInvalidProbes(
-        gi::probeRayImage(rhi::readBufferAs<gpu::float4>(device(), *r.rayRadiance), r.raysPerProbe, gw, gh),
-        probes, gw, gh);
-    ASSERT_TRUE(gather.nearFieldTraced()) << name << ": the lumen preset traces a near field";
-    const image::Image nearField = zeroInvalidProbes(
-        gi::probeRayImage(rhi::readBufferAs<gpu::float4>(device(), *r.nearField), r.raysPerProbe, gw, gh),
-        probes, gw, gh);
-    const image::Image composite = perTexel(r.frameRadiance);
-    const image::Image history = perTexel(r.history[current]);
-    const image::Image filtered = perTexel(r.filtered);
+    const uint32_t gw = r.gridWidth, gh = r.gridHeight;
+
+    h.render(kEarlyFrames);
+    const PerRayImages early = readPerRayImages(device(), gather);
+    h.render(kFrames - kEarlyFrames);
+    const PerRayImages late = readPerRayImages(device(), gather);
+    const std::vector<gpu::ScreenProbe>& probes = late.probes;
     const image::Image atlas = zeroInvalidProbes(h.read(r.irradiance), probes, gw, gh);
     const image::Image screenGather = h.read(r.gather);
-    const image::Image screenResult = h.read(r.screenIrradiance[current]);
+    const image::Image screenResult = h.read(r.screenIrradiance[gather.current()]);
     const image::Image hdr = h.hdr();
-    for (const auto& [what, image] : {std::pair{"ray radiance", &rays},
-                                      {"near field", &nearField},
-                                      {"composite", &composite},
-                                      {"history", &history},
-                                      {"filtered", &filtered},
+    for (const auto& [what, image] : {std::pair{"ray radiance", &late.rays},
+                                      {"near field", &late.nearField},
+                                      {"composite", &late.composite},
+                                      {"history", &late.history},
+                                      {"filtered", &late.filtered},
                                       {"irradiance atlas", &atlas},
                                       {"gather", &screenGather},
                                       {"screen temporal", &screenResult},
                                       {"frame", &hdr}}) {
         EXPECT_EQ(nonFiniteValues(*image), 0u) << name << ": " << what;
     }
+    ASSERT_TRUE(gather.nearFieldTraced()) << name << ": the lumen preset traces a near field";
 
     const auto [position, normal] = placementImages(probes, gw, gh, h.scene().worldBounds());
     const GoldenTolerance perRay = device().api() == rhi::Api::D3D12 ? kPerRayLightingD3d12 : kLighting;
     GoldenChecks checks = {
         {spec(name, "probe_position", kUnitRange, 0.0f, 1.5f), position},
         {spec(name, "probe_normal", kNormals, -1.0f, 1.0f), normal},
-        {spec(name, "near_field", perRay), lightingView(nearField, 1.0f, Alpha::Source)},
-        {spec(name, "ray_radiance", perRay), lightingView(rays, 1.0f, Alpha::Flag)},
-        {spec(name, "probe_composite", perRay), lightingView(composite, 1.0f, Alpha::Weight)},
-        {spec(name, "probe_history", perRay), lightingView(history, 1.0f, Alpha::Weight)},
-        {spec(name, "probe_filtered", perRay), lightingView(filtered, 1.0f, Alpha::Weight)},
-        {spec(name, "irradiance_atlas", kLighting), irradianceView(atlas, Alpha::Drop)},
-        {spec(name, "gather", kLighting), irradianceView(screenGather, Alpha::Drop)},
-        {spec(name, "screen_temporal", kLighting), irradianceView(screenResult, Alpha::Frames)},
-        {spec(name, "frame", kLighting), lightingView(hdr, 1.0f, Alpha::Drop)},
     };
+    appendPerRayChecks(checks, name, "_frame2", early, kLighting);
+    appendPerRayChecks(checks, name, "", late, perRay);
+    checks.insert(checks.end(),
+                  {
+                      {spec(name, "irradiance_atlas", kLighting), irradianceView(atlas, Alpha::Drop)},
+                      {spec(name, "gather", kLighting), irradianceView(screenGather, Alpha::Drop)},
+                      {spec(name, "screen_temporal", kLighting), irradianceView(screenResult, Alpha::Frames)},
+                      {spec(name, "frame", kLighting), lightingView(hdr, 1.0f, Alpha::Drop)},
+                  });
 
     const surface_cache::SurfaceCache& cache = h.lumen().surfaceCache();
     const auto layer = [&](surface_cache::AtlasLayer which) {
