@@ -100,12 +100,19 @@ std::vector<bool> PointShadowPass::record(FrameContext& frame, const std::vector
                 const glm::vec3 nearest = glm::clamp(glm::vec3(sphere), box.min, box.max);
                 return !box.empty() && glm::distance(nearest, glm::vec3(sphere)) <= sphere.w;
             });
-        if (!fresh && sphere == renderedCubes_[cube] && !geometryInRange && frame.mayReuse(kPassName)) {
+        const bool unchanged = !fresh && sphere == renderedCubes_[cube] && !geometryInRange;
+        if (unchanged && frame.mayReuse(kPassName)) {
             kept.push_back(std::to_string(cube) + " (since frame " + std::to_string(renderedFrames_[cube]) +
                            ")");
             continue;
         }
         renderCube(frame, cube, shadowConstants);
+        // Forced (lumina bench --verify-skips) over an unchanged cube: the same distances again,
+        // which must not read as a change, or the surface cache would re-light and restart its
+        // bounces around the light.
+        if (unchanged) {
+            continue;
+        }
         renderedCubes_[cube] = sphere;
         renderedFrames_[cube] = frame.frameIndex();
         rendered[cube] = true;

@@ -23,7 +23,8 @@ public:
 
     // cubes: per shadowed light, xyz position and w shadow range (DeferredShadowConstants::pointLights).
     // movedRegions: world boxes where geometry moved since the last call. Returns, per cube,
-    // whether it was rendered this frame.
+    // whether its content may have changed this frame (a forced re-render of an unchanged cube,
+    // FrameContext::mayReuse, renders the same map and returns false).
     std::vector<bool> record(FrameContext& frame, const std::vector<glm::vec4>& cubes,
                              const rhi::BufferHandle& shadowConstants,
                              std::span<const scene::Bounds> movedRegions);

@@ -23,7 +23,8 @@ public:
 
     // `fit` is empty when the scene has no directional light. shadowConstants holds
     // DeferredShadowConstants (with `fit` in it); geometryMoved: an instance moved since the last
-    // call (the map covers the whole scene, so any move re-renders it). True when it rendered.
+    // call (the map covers the whole scene, so any move re-renders it). True when it rendered a
+    // map that may differ from the last (a forced re-render of an unchanged map returns false).
     bool record(FrameContext& frame, const std::optional<SunShadowFit>& fit,
                 const rhi::BufferHandle& shadowConstants, bool geometryMoved);
 
