@@ -30,8 +30,12 @@ gpu::VoxelGridInfo voxelGridOver(glm::vec3 boundsMin, glm::vec3 boundsMax, uint3
 }
 
 VoxelLightingPass::VoxelLightingPass(rhi::IDevice& device, const gpu::VoxelGridInfo& grid,
-                                     const sdf::SceneSdf& sdf, float buriedDistance)
-    : grid_(grid), sdf_(sdf), buriedDistance_(buriedDistance) {
+                                     const sdf::SceneSdf& sdf, float buriedDistance, float nominalTexelArea)
+    : grid_(grid), sdf_(sdf), buriedDistance_(buriedDistance), nominalTexelArea_(nominalTexelArea) {
+    if (!(nominalTexelArea > 0.0f) || !std::isfinite(nominalTexelArea)) {
+        throw std::invalid_argument("voxel lighting: nominal texel area " + std::to_string(nominalTexelArea) +
+                                    " is not a positive finite number");
+    }
     const uint64_t voxels = uint64_t(grid.dims.x) * grid.dims.y * grid.dims.z;
     accumulator_ = device.createBuffer({.size = voxels * LUMINA_VOXEL_FACES * 4 * sizeof(uint32_t),
                                         .structStride = sizeof(uint32_t),
@@ -64,9 +68,9 @@ void VoxelLightingPass::record(gi::FrameContext& frame, const AtlasSurfaceBindin
                                               .tilesPerRow = tiles.tilesPerRow(),
                                               .updateIndex = update,
                                               .buriedProbeDistance = buriedDistance_,
-                                              .buriedPadding0 = 0.0f,
-                                              .buriedPadding1 = 0.0f,
-                                              .buriedPadding2 = 0.0f};
+                                              .nominalTexelArea = nominalTexelArea_,
+                                              .injectPadding0 = 0.0f,
+                                              .injectPadding1 = 0.0f};
     sdf_.bindForTracing(frame.compute(kInjectPassName, "surface_cache/voxel_lighting.inject"))
         .constants(constants)
         .read(6, surfaces.atlas.final)

@@ -23,9 +23,11 @@
 #define LUMINA_TILE_LIST_ROW_THREADS 65536u
 
 // Voxel lighting accumulates radiance with 32-bit integer atomics in fixed point: one unit is
-// 1 / LUMINA_VOXEL_FIXED_POINT_SCALE of radiance. A texel adds at most
-// LUMINA_VOXEL_MAX_RADIANCE * scale = 2^18, so a voxel holds 2^14 texels before a lane could
-// overflow (a 64^3 grid over a 4 m room has about 4 texels per voxel at 16 texels per metre).
+// 1 / LUMINA_VOXEL_FIXED_POINT_SCALE of radiance. A texel's weight is its world area over a
+// nominal texel's (1 / texelsPerUnit^2), so it adds at most LUMINA_VOXEL_MAX_RADIANCE * scale =
+// 2^18 per nominal texel of area, and a voxel face holds 2^14 nominal texels of surface before a
+// lane could overflow, whatever its cards' densities (a 64^3 grid over a 4 m room has about 4
+// nominal texels per voxel face at 16 texels per metre).
 #define LUMINA_VOXEL_FIXED_POINT_SCALE 256.0f
 #define LUMINA_VOXEL_MAX_RADIANCE 1024.0f
 
@@ -129,9 +131,9 @@ struct VoxelInjectConstants {
     uint tilesPerRow;          // tiles per atlas row
     uint updateIndex;          // the dither of resolve's half rounding
     float buriedProbeDistance; // a texel is buried when the global SDF is negative this far in front (world)
-    float buriedPadding0;
-    float buriedPadding1;
-    float buriedPadding2;
+    float nominalTexelArea;    // world area of a texel at the cache's full density (1 / texelsPerUnit^2)
+    float injectPadding0;
+    float injectPadding1;
 };
 LUMINA_STATIC_ASSERT_SIZE(VoxelInjectConstants, 64);
 LUMINA_STATIC_ASSERT_OFFSET(VoxelInjectConstants, atlasSize, 32);

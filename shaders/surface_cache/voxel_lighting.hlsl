@@ -6,11 +6,11 @@
 //   inject:  one thread per texel of the listed tiles; a captured texel adds its radiance to
 //            the voxel holding its world position (fixed-point atomics: RGBA16F has none), into
 //            the faces its normal points along (LUMINA_VOXEL_FACES), each weighted by the squared
-//            normal component (the weights sum to 1).
+//            normal component (the weights sum to 1) times the texel's world area.
 //            A texel buried in geometry (the floor under a block, the block's face on the floor:
 //            the global SDF is negative just in front of it) is seen by nothing and adds nothing,
 //            or it would darken the visible surfaces that share its voxels.
-//   resolve: one thread per voxel face; rgb = weighted mean radiance of the texels it received,
+//   resolve: one thread per voxel face; rgb = area-weighted mean radiance of the texels it received,
 //            a = 1 where it received any (coverage, which the lookup weights by), then zeroes the
 //            accumulator for the next update.
 #include "common/constants_shared.h"
@@ -33,6 +33,22 @@ LUMINA_UAV_FORMAT(rgba16f) RWTexture3D<float4> gVoxels : register(u1);
 #define LUMINA_SURFACE_CARD(i) gCards[i]
 #define LUMINA_CAPTURE_DEPTH gCaptureDepth
 #include "surface_cache/surface_cache_texel.hlsli"
+
+// A texel's world area over the nominal texel's. A card's rectangle is rounded up to whole tiles,
+// so a small card has more texels per square metre than a large one (two_rooms' 1.2 m panel: 1.64
+// times the ceiling's), and a voxel that averaged texels, not area, let the denser card outweigh
+// the other: the panel's edge voxels read brighter than the panel and the ceiling around it
+// (docs/gi.md, energy). Card space maps the card's extent to [0, 1]^2, so the row lengths are
+// the inverse width and height. Capped at 16 (a card at a quarter of full density along each
+// axis), which keeps a voxel's fixed-point sum under 2^32 for 1,024 such texels.
+#define LUMINA_VOXEL_MAX_AREA_WEIGHT 16.0f
+float texelAreaWeight(SurfaceCard card) {
+    float area = 1.0f / (length(card.worldToCard0.xyz) * length(card.worldToCard1.xyz) *
+                         float(card.atlasRect.z) * float(card.atlasRect.w));
+    float weight = area / gConstants.nominalTexelArea;
+    // NaN or 0 (a degenerate card) weighs as a texel at full density.
+    return weight > 0.0f ? min(weight, LUMINA_VOXEL_MAX_AREA_WEIGHT) : 1.0f;
+}
 
 [numthreads(LUMINA_LINEAR_GROUP_SIZE, 1, 1)] void inject(uint3 id
                                    : SV_DispatchThreadID) {
@@ -60,14 +76,18 @@ LUMINA_UAV_FORMAT(rgba16f) RWTexture3D<float4> gVoxels : register(u1);
     // The final layer is finite by construction (combine); the clamp keeps the sum in range.
     float3 radiance = clamp(gFinal.Load(int3(texel, 0)).rgb, 0.0f, LUMINA_VOXEL_MAX_RADIANCE);
     float3 n = normalize(normal.xyz);
+    float area = texelAreaWeight(gCards[card]);
     for (uint axis = 0u; axis < 3u; ++axis) {
-        float weight = n[axis] * n[axis];
+        float weight = n[axis] * n[axis] * area;
         uint fixedWeight = uint(weight * LUMINA_VOXEL_FIXED_POINT_SCALE + 0.5f);
         if (fixedWeight == 0u) {
             continue;
         }
         uint face = 2u * axis + (n[axis] < 0.0f ? 1u : 0u);
-        uint3 fixedPoint = uint3(radiance * weight * LUMINA_VOXEL_FIXED_POINT_SCALE + 0.5f);
+        // Radiance times the rounded weight: resolve divides by the sum of rounded weights, so a
+        // uniform radiance resolves exactly whatever each weight rounded to (a weight of 0.4
+        // rounds 0.4 % low, which the unrounded product turned into 0.4 % too bright).
+        uint3 fixedPoint = uint3(radiance * float(fixedWeight) + 0.5f);
         uint base = 4u * uint(int(face) * dims.x + voxel.x +
                               LUMINA_VOXEL_FACES * dims.x * (voxel.y + dims.y * voxel.z));
         uint ignored;
