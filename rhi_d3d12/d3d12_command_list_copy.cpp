@@ -17,6 +17,15 @@ namespace {
 static_assert(rhi::kTextureCopyOffsetAlignment == D3D12_TEXTURE_DATA_PLACEMENT_ALIGNMENT);
 static_assert(rhi::kTextureCopyRowAlignment == D3D12_TEXTURE_DATA_PITCH_ALIGNMENT);
 constexpr uint64_t kBufferCopyAlignment = 16;
+// fillBuffer clears a buffer up to this size with ClearUnorderedAccessViewUint, a larger one by
+// copies. vkd3d 1.6 (Wine's D3D12) runs that clear as one dispatch of 32-thread groups, one word
+// per thread, and Vulkan allows 65535 groups: 8 MiB. Beyond it the validation layer beneath vkd3d
+// reported the dispatch (the voxel lighting's 24 MiB accumulator), and a driver may clear only
+// part of the buffer. Views of 8 MiB pieces of the buffer did not help: vkd3d dispatched for the
+// whole resource.
+constexpr uint64_t kLargestUavClearBytes = 65535ull * 32 * 4;
+// The upload memory a copy-based fill takes: the pattern once, copied as often as it takes.
+constexpr uint64_t kFillChunkBytes = 1ull << 20;
 // Render-target clears of UINT formats pass floats; integers above 2^24 would round.
 constexpr uint32_t kExactFloatIntegers = 1u << 24;
 
@@ -237,7 +246,8 @@ void CommandList::fillBuffer(rhi::IBuffer& dst, uint32_t value) {
     if (words == 0) {
         throw rhi::Error("fillBuffer('" + dst.debugName() + "'): the buffer is smaller than 4 bytes");
     }
-    if (buffer.desc().memory == rhi::MemoryType::GpuOnly && listType_ != D3D12_COMMAND_LIST_TYPE_COPY) {
+    if (buffer.desc().memory == rhi::MemoryType::GpuOnly && listType_ != D3D12_COMMAND_LIST_TYPE_COPY &&
+        words * 4 <= kLargestUavClearBytes) {
         // ClearUnorderedAccessViewUint takes the view twice: in a shader-visible heap, and in
         // a CPU-only one.
         const D3D12_CPU_DESCRIPTOR_HANDLE view = buffer.wholeRawUav();
@@ -250,12 +260,17 @@ void CommandList::fillBuffer(rhi::IBuffer& dst, uint32_t value) {
         commandRecorded();
         return;
     }
-    // Copy queue, or readback memory: copy the pattern from upload memory.
-    const UploadAllocation staging = upload_.allocate(words * 4, kBufferCopyAlignment);
-    std::fill_n(reinterpret_cast<uint32_t*>(staging.cpu), words, value);
+    // Copy queue, readback memory or a large buffer: copy the pattern from upload memory, one
+    // chunk of it again and again.
+    const uint64_t chunkWords = std::min<uint64_t>(words, kFillChunkBytes / 4);
+    const UploadAllocation staging = upload_.allocate(chunkWords * 4, kBufferCopyAlignment);
+    std::fill_n(reinterpret_cast<uint32_t*>(staging.cpu), chunkWords, value);
     use(dst, rhi::ResourceState::CopyDest);
     flushBarriers();
-    list_->CopyBufferRegion(buffer.native(), 0, staging.resource, staging.offset, words * 4);
+    for (uint64_t first = 0; first < words; first += chunkWords) {
+        const uint64_t count = std::min(chunkWords, words - first);
+        list_->CopyBufferRegion(buffer.native(), first * 4, staging.resource, staging.offset, count * 4);
+    }
     commandRecorded();
 }
 
