@@ -71,13 +71,12 @@ FurnaceResult runFurnace(rhi::IDevice& device, rhi::ShaderLibrary& shaders, cons
     const std::vector<glm::vec4> final = h.cache.readLayer(AtlasLayer::FinalLighting);
     const std::vector<glm::vec4> normal = h.cache.readLayer(AtlasLayer::Normal);
     const uint32_t size = h.cache.atlas().size();
-    const std::vector<uint32_t>& owners = h.cache.cards().atlas().ownerTable();
     const std::vector<glm::vec3> world = atlasWorldPositions(h.device_, h.cache);
     double sum = 0.0;
     for (uint32_t y = 0; y < size; ++y) {
         for (uint32_t x = 0; x < size; ++x) {
             const size_t i = size_t(y) * size + x;
-            const uint32_t card = owners[(y / kTileSize) * (size / kTileSize) + x / kTileSize];
+            const uint32_t card = atlasTexelOwner(h.cache, x, y);
             if (normal[i].a == 0.0f || card == kNoOwner || hidden(h.scene, h.cache.cards(), card, world[i])) {
                 continue;
             }

@@ -66,6 +66,12 @@ private:
     uint64_t frameIndex_ = 0;
 };
 
+// The card that owns atlas texel (x, y), or kNoOwner.
+inline uint32_t atlasTexelOwner(const surface_cache::SurfaceCache& cache, uint32_t x, uint32_t y) {
+    const surface_cache::TileAllocator& atlas = cache.cards().atlas();
+    return atlas.ownerTable()[(y / surface_cache::kTileSize) * atlas.tilesX() + x / surface_cache::kTileSize];
+}
+
 // World positions of every atlas texel's captured surface (its centre), from the capture depth
 // and the owning card's map; (0,0,0) where no card owns the texel.
 inline std::vector<glm::vec3> atlasWorldPositions(rhi::IDevice& device,
@@ -74,13 +80,10 @@ inline std::vector<glm::vec3> atlasWorldPositions(rhi::IDevice& device,
     const std::vector<uint8_t> bytes = rhi::readTexture(device, *cache.capture().depth());
     std::vector<float> depth(size_t(size) * size);
     std::memcpy(depth.data(), bytes.data(), depth.size() * sizeof(float));
-    const std::vector<uint32_t>& owners = cache.cards().atlas().ownerTable();
-    const uint32_t tilesX = cache.cards().atlas().tilesX();
     std::vector<glm::vec3> world(depth.size(), glm::vec3(0.0f));
     for (uint32_t y = 0; y < size; ++y) {
         for (uint32_t x = 0; x < size; ++x) {
-            const uint32_t card =
-                owners[(y / surface_cache::kTileSize) * tilesX + x / surface_cache::kTileSize];
+            const uint32_t card = atlasTexelOwner(cache, x, y);
             if (card == surface_cache::kNoOwner) {
                 continue;
             }

@@ -90,14 +90,12 @@ TEST_P(VoxelLightingGpu, AVoxelHoldsTheMeanOverAreaNotOverTexels) {
     const std::vector<glm::vec4> final = h.cache.readLayer(AtlasLayer::FinalLighting);
     const std::vector<glm::vec4> normal = h.cache.readLayer(AtlasLayer::Normal);
     const std::vector<glm::vec3> world = atlasWorldPositions(device(), h.cache);
-    const std::vector<uint32_t>& owners = h.cache.cards().atlas().ownerTable();
-    const uint32_t tilesX = h.cache.cards().atlas().tilesX();
     const gpu::VoxelGridInfo& grid = h.cache.voxelLighting().grid();
     std::map<std::tuple<uint32_t, uint32_t, uint32_t>, VoxelSums> sums;
     for (uint32_t y = 0; y < size; ++y) {
         for (uint32_t x = 0; x < size; ++x) {
             const size_t i = size_t(y) * size + x;
-            const uint32_t card = owners[(y / kTileSize) * tilesX + x / kTileSize];
+            const uint32_t card = atlasTexelOwner(h.cache, x, y);
             if (card == kNoOwner || normal[i].a == 0.0f) {
                 continue;
             }
