@@ -13,7 +13,7 @@
 namespace lumina::surface_cache {
 
 struct RadiosityTraceSettings {
-    float originOffset = 0.0f; // rays start this far along the texel normal (world); 0: two global SDF voxels
+    float originOffset = 0.0f; // rays start this far along the texel normal (world); 0: one global SDF voxel
     float maxDistance = 0.0f;  // world; 0: the global SDF grid's diagonal
     float filterMinCosine = 0.9f; // neighbours whose normals differ more are not filtered in
 };

@@ -69,7 +69,6 @@ SurfaceCache::SurfaceCache(rhi::IDevice& device, const scene::Scene& scene, cons
       radiosityTiles_(device, settings.atlasSize, "surface cache radiosity tiles"),
       directTiles_(device, settings.atlasSize, "surface cache direct-light tiles"),
       voxels_(device, gridOverCards(cards_, lighting.voxelResolution), sdf,
-              radiosityOriginOffset(lighting.trace, sdf),
               1.0f / (settings.texelsPerUnit * settings.texelsPerUnit)),
       radiosity_(device, settings.atlasSize, sdf, gpuScene.sky, lighting.trace),
       schedule_(lighting.schedule, maxAlbedo(scene)), cardTiles_(tilesWithCards(cards_.atlas())),

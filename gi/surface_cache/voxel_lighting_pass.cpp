@@ -30,8 +30,8 @@ gpu::VoxelGridInfo voxelGridOver(glm::vec3 boundsMin, glm::vec3 boundsMax, uint3
 }
 
 VoxelLightingPass::VoxelLightingPass(rhi::IDevice& device, const gpu::VoxelGridInfo& grid,
-                                     const sdf::SceneSdf& sdf, float buriedDistance, float nominalTexelArea)
-    : grid_(grid), sdf_(sdf), buriedDistance_(buriedDistance), nominalTexelArea_(nominalTexelArea) {
+                                     const sdf::SceneSdf& sdf, float nominalTexelArea)
+    : grid_(grid), sdf_(sdf), nominalTexelArea_(nominalTexelArea) {
     if (!(nominalTexelArea > 0.0f) || !std::isfinite(nominalTexelArea)) {
         throw std::invalid_argument("voxel lighting: nominal texel area " + std::to_string(nominalTexelArea) +
                                     " is not a positive finite number");
@@ -67,10 +67,10 @@ void VoxelLightingPass::record(gi::FrameContext& frame, const AtlasSurfaceBindin
                                               .tileCount = tiles.count(),
                                               .tilesPerRow = tiles.tilesPerRow(),
                                               .updateIndex = update,
-                                              .buriedProbeDistance = buriedDistance_,
                                               .nominalTexelArea = nominalTexelArea_,
                                               .injectPadding0 = 0.0f,
-                                              .injectPadding1 = 0.0f};
+                                              .injectPadding1 = 0.0f,
+                                              .injectPadding2 = 0.0f};
     sdf_.bindForTracing(frame.compute(kInjectPassName, "surface_cache/voxel_lighting.inject"))
         .constants(constants)
         .read(6, surfaces.atlas.final)

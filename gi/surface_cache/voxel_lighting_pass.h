@@ -32,12 +32,12 @@ public:
     static constexpr const char* kInjectPassName = "surface cache: voxel inject";
     static constexpr const char* kResolvePassName = "surface cache: voxel resolve";
 
-    // Texels whose global SDF is negative buriedDistance in front of them (covered by other
-    // geometry) inject nothing. Each texel weighs its world area over nominalTexelArea (a texel's
+    // Texels buried in other geometry (atlasTexelBuried, surface_cache_texel.hlsli) inject
+    // nothing. Each texel weighs its world area over nominalTexelArea (a texel's
     // at the cache's full density): a voxel's radiance is the mean over the area it holds, not
     // over texels, whose density differs from card to card.
     VoxelLightingPass(rhi::IDevice& device, const gpu::VoxelGridInfo& grid, const sdf::SceneSdf& sdf,
-                      float buriedDistance, float nominalTexelArea);
+                      float nominalTexelArea);
 
     // Zeroes the accumulator; record once before the first update.
     void recordClear(rhi::ICommandList& commands) const;
@@ -52,7 +52,6 @@ public:
 private:
     gpu::VoxelGridInfo grid_;
     const sdf::SceneSdf& sdf_;
-    float buriedDistance_ = 0.0f;
     float nominalTexelArea_ = 1.0f;
     rhi::BufferHandle accumulator_; // per voxel face: r, g, b and weight in fixed point
     rhi::TextureHandle volume_; // RGBA16F, LUMINA_VOXEL_FACES x dims.x wide: rgb mean radiance, a coverage

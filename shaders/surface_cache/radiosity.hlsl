@@ -94,7 +94,7 @@ float3 finiteOrZero(float3 v) {
 // Free space a probe's rays need where they start, in voxels of the cascade there: below the
 // trace's hit threshold (0.1 voxel) every ray stops where it starts and the probe reads black. Near
 // a concave edge the global SDF's zero crossing runs up to a voxel in front of the true surface,
-// so an origin lifted two voxels off one wall can sit on the zero crossing of the wall beside it
+// so an origin lifted off one wall can sit on the zero crossing of the wall beside it
 // (the last row of probes on a Cornell box's side wall, next to the back wall, read black).
 #define LUMINA_RADIOSITY_CLEARANCE_VOXELS 0.5f
 
@@ -176,7 +176,7 @@ float3 probeRayOriginAt(float3 world, float3 n) {
             bestClearance = clearance;
         }
     }
-    if (card == LUMINA_NO_CARD || atlasTexelBuried(world, n, gConstants.originOffset)) {
+    if (card == LUMINA_NO_CARD || atlasTexelBuried(world, n)) {
         gProbesOut[probeIndex(probe)] = emptyProbe(); // its texels get no indirect light
         return;
     }

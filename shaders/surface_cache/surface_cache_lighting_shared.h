@@ -130,14 +130,14 @@ struct VoxelInjectConstants {
     uint tileCount;            // tiles in the list
     uint tilesPerRow;          // tiles per atlas row
     uint updateIndex;          // the dither of resolve's half rounding
-    float buriedProbeDistance; // a texel is buried when the global SDF is negative this far in front (world)
     float nominalTexelArea;    // world area of a texel at the cache's full density (1 / texelsPerUnit^2)
     float injectPadding0;
     float injectPadding1;
+    float injectPadding2;
 };
 LUMINA_STATIC_ASSERT_SIZE(VoxelInjectConstants, 64);
 LUMINA_STATIC_ASSERT_OFFSET(VoxelInjectConstants, atlasSize, 32);
-LUMINA_STATIC_ASSERT_OFFSET(VoxelInjectConstants, buriedProbeDistance, 48);
+LUMINA_STATIC_ASSERT_OFFSET(VoxelInjectConstants, nominalTexelArea, 48);
 
 struct RadiosityConstants {
     VoxelGridInfo grid;

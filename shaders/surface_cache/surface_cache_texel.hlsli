@@ -45,11 +45,19 @@ float3 atlasTexelWorldPosition(SurfaceCard card, uint2 texel) {
 }
 
 #if defined(LUMINA_SDF_GLOBAL)
-// A texel buried in geometry: `distance` in front of it lies deeper than half that distance
-// inside a solid (the floor under a block; a face lying on another surface). Nothing sees it,
-// nothing lights it. Half, not zero: near a concave edge the global SDF's zero crossing runs a
-// fraction of a voxel off the true surface, and visible texels there must not count as buried.
-bool atlasTexelBuried(float3 world, float3 normal, float distance) {
+// How far in front of a texel the buried test looks, in voxels of the global SDF cascade there.
+// Two, whatever the radiosity's lift: near a concave edge the zero crossing runs up to a voxel in
+// front of the true surface, and one voxel (threshold half a voxel) buried the texels along a
+// closed room's edges, whose voxels then read nothing (furnace_0.95 at the low preset lost 6.8 %
+// when the lift, which this distance used to be, went from two voxels to one; docs/gi.md, 16.).
+#define LUMINA_BURIED_TEXEL_VOXELS 2.0f
+
+// A texel buried in geometry: the point LUMINA_BURIED_TEXEL_VOXELS in front of it lies deeper
+// than half that distance inside a solid (the floor under a block; a face lying on another
+// surface). Nothing sees it, nothing lights it. Half, not zero: visible texels by a concave edge
+// must not count as buried.
+bool atlasTexelBuried(float3 world, float3 normal) {
+    float distance = LUMINA_BURIED_TEXEL_VOXELS * sdfGlobalVoxelSizeAt(world);
     return sdfSampleGlobal(world + distance * normal) < -0.5f * distance;
 }
 #endif

@@ -64,7 +64,7 @@ float texelAreaWeight(SurfaceCard card) {
         return;
     }
     float3 world = atlasTexelWorldPosition(gCards[card], texel);
-    if (atlasTexelBuried(world, normalize(normal.xyz), gConstants.buriedProbeDistance)) {
+    if (atlasTexelBuried(world, normalize(normal.xyz))) {
         return;
     }
     float3 local = (world - gConstants.grid.boxMin) / gConstants.grid.voxelSize;

@@ -55,19 +55,21 @@ std::string goalName(const ::testing::TestParamInfo<std::tuple<rhi::Api, SceneGo
 // it yet, the bound is the figure measured on lavapipe (128x128, medium, commit of issue 26) with
 // a margin, and docs/gi.md says what is missing. Measured: relMSE / direct-only's, mean ratio.
 const SceneGoal kSceneGoals[] = {
-    // 0.054, 1.018: the goal's relMSE not met (0.047 before the Cornell blocks became solids).
+    // 0.052, 1.009: the goal's relMSE not met (0.047 before the Cornell blocks became solids).
     {.scene = "cornell_box", .relMseFraction = 0.065, .meanTolerance = 0.03},
-    {.scene = "cornell_box_point", .relMseFraction = 0.05, .meanTolerance = 0.03}, // 0.034, 1.010
-    // 0.074, 0.960: the mean's goal not met since rays no longer read faces that face along them
+    {.scene = "cornell_box_point", .relMseFraction = 0.05, .meanTolerance = 0.03}, // 0.034, 1.006
+    // 0.072, 0.959: the mean's goal not met since rays no longer read faces that face along them
     // (docs/gi.md, energy 10.): 1.014 before, where rays passing the opening's rim read the
     // sunlit outside and made up for the sky the rim's shell hides from them.
     {.scene = "open_top_box", .relMseFraction = 0.1, .meanTolerance = 0.06},
-    // 0.132, 1.098: the east room too bright (docs/gi.md, energy).
-    {.scene = "two_rooms", .relMseFraction = 0.2, .meanTolerance = 0.15},
-    // 0.687, 1.047 (1.283, 1.458 before energy 9.-11.): 0.59 of the 0.69 are five floor pixels the
-    // deferred sun lights through its shadow map at the foot of a wall, as direct-only has them;
-    // the 1,024-spp reference's own noise is large here (the sun patch is found by few paths).
-    {.scene = "sunlit_rooms", .relMseFraction = 0.85, .meanTolerance = 0.1},
+    // 0.110, 1.036: the east room too bright (docs/gi.md, energy; 0.129, 1.086 with the radiosity
+    // probes lifted two voxels, 16.).
+    {.scene = "two_rooms", .relMseFraction = 0.13, .meanTolerance = 0.06},
+    // 0.681, 1.026 (1.088 with two voxels' lift; 1.283, 1.458 before energy 9.-11.): 0.59 of the
+    // 0.68 are five floor pixels the deferred sun lights through its shadow map at the foot of a
+    // wall, as direct-only has them; the 1,024-spp reference's own noise is large here (the sun
+    // patch is found by few paths).
+    {.scene = "sunlit_rooms", .relMseFraction = 0.75, .meanTolerance = 0.05},
 };
 
 INSTANTIATE_TEST_SUITE_P(Scenes, FrameVsStoredReferenceGpu,

@@ -147,7 +147,7 @@ TEST_P(VoxelLightingGpu, RefusesANominalTexelAreaThatIsNotPositive) {
     SurfaceCacheHarness h(device(), shaders(), twoStripFloor(), SurfaceCacheSettings{});
     const gpu::VoxelGridInfo& grid = h.cache.voxelLighting().grid();
     for (const float area : {0.0f, -1.0f, NAN, INFINITY}) {
-        EXPECT_THROW(VoxelLightingPass(device(), grid, h.sdf, 0.1f, area), std::invalid_argument) << area;
+        EXPECT_THROW(VoxelLightingPass(device(), grid, h.sdf, area), std::invalid_argument) << area;
     }
 }
 
