@@ -120,13 +120,32 @@ float3 liftedOrigin(float3 world, float3 n) {
 // differently, and their probes' light differed by up to 0.5).
 #define LUMINA_RADIOSITY_CLEARANCE_TIE (1.0f / 32.0f)
 
-// Where the rays of a probe on texel `world` start: lifted off the surface, then pushed along the
-// SDF's gradient until it has its clearance. A texel beside a block standing on it (a floor texel
+// Whether p, projected onto `card` along its axis, lands on one of the card's captured texels. A
+// push that carries an origin past the card's edge has gone through the surface that meets the
+// card there: an inner wall's top row lifts into the shell of a zero-thickness ceiling, whose coarse
+// gradient there may point up, and pushed along it the probe read the sky and the sunlit roof
+// (sunlit_rooms at the high preset, whose 9 cm probe blocks hold no texel with clearance under the
+// ceiling, read 19 % bright; docs/gi.md, energy, 18.).
+bool projectsOntoCard(uint card, float3 p) {
+    SurfaceCard c = gCards[card];
+    float2 texel = cardToAtlasTexel(c, worldToCardSpace(c, p).xy);
+    float2 rectMin = float2(c.atlasRect.xy);
+    float2 rectMax = rectMin + float2(c.atlasRect.zw);
+    bool inside = all(texel >= rectMin) && all(texel < rectMax);
+    uint2 nearest = uint2(clamp(texel, rectMin, rectMax - 1.0f));
+    return inside && gSurface.Load(int4(nearest, 0, 0)).a > 0.0f;
+}
+
+// Where the rays of a probe on texel `world` of `card` start: lifted off the surface, then pushed
+// along the SDF's gradient until it has its clearance; a push that would leave the card's surface
+// (projectsOntoCard) lifts further along the normal instead. Not the other way along the card:
+// that turned a door jamb's probes towards the lit room, and the shut door's dark room read six
+// times its light. A texel beside a block standing on it (a floor texel
 // at the block's foot) lifts into the block's zero crossing, up to a voxel inside; its gradient
 // leads out of the block on the texel's side. Origins deeper inside are buried
 // (atlasTexelBuried) and never traced: a push moves a voxel and a half at most, too little to
 // cross a wall from the side the texel faces.
-float3 probeRayOriginAt(float3 world, float3 n) {
+float3 probeRayOriginAt(float3 world, float3 n, uint card) {
     float3 origin = liftedOrigin(world, n);
     for (uint push = 0u; push < LUMINA_RADIOSITY_CLEARANCE_PUSHES; ++push) {
         float distance = sdfSampleGlobal(origin);
@@ -134,7 +153,12 @@ float3 probeRayOriginAt(float3 world, float3 n) {
         if (distance >= clearance) {
             break;
         }
-        origin += (clearance - distance) * sdfGlobalNormal(origin);
+        float3 gradient = sdfGlobalNormal(origin);
+        float3 pushed = origin + (clearance - distance) * gradient;
+        if (!projectsOntoCard(card, pushed)) {
+            pushed = origin + (clearance - distance) * n;
+        }
+        origin = pushed;
     }
     return origin;
 }
@@ -180,7 +204,7 @@ float3 probeRayOriginAt(float3 world, float3 n) {
         gProbesOut[probeIndex(probe)] = emptyProbe(); // its texels get no indirect light
         return;
     }
-    float3 origin = probeRayOriginAt(world, n);
+    float3 origin = probeRayOriginAt(world, n, card);
     // An orthonormal frame around n (Duff et al. 2017, branchless).
     float s = n.z >= 0.0f ? 1.0f : -1.0f;
     float a = -1.0f / (s + n.z);
@@ -260,7 +284,8 @@ float3 probeRayOriginAt(float3 world, float3 n) {
 // off the surface as the trace lifts it. Recomputed, not stored: the gradient's push is the same.
 float3 probeRayOrigin(uint2 probe, RadiosityProbe traced) {
     uint2 texel = probe * LUMINA_RADIOSITY_PROBE_SPACING + kProbeTexelOrder[uint(traced.normalAndTexel.w) - 1u];
-    return probeRayOriginAt(atlasTexelWorldPosition(gCards[atlasTexelCard(texel)], texel), traced.normalAndTexel.xyz);
+    uint card = atlasTexelCard(texel);
+    return probeRayOriginAt(atlasTexelWorldPosition(gCards[card], texel), traced.normalAndTexel.xyz, card);
 }
 
 // Sphere-traces the global SDF from one probe's ray origin to another's: a neighbour on the same

@@ -23,10 +23,11 @@ struct SceneGoal {
     const char* scene;
     double relMseFraction; // lumen's relMSE / direct-only's, at most
     double meanTolerance;  // |lumen's mean / the reference's - 1|, at most
+    const char* preset = "medium";
 };
 
 void PrintTo(const SceneGoal& goal, std::ostream* out) {
-    *out << goal.scene;
+    *out << goal.scene << " " << goal.preset;
 }
 
 class FrameVsStoredReferenceGpu : public GpuTestFixture,
@@ -38,7 +39,8 @@ protected:
 TEST_P(FrameVsStoredReferenceGpu, LumenMeetsItsSceneGoal) {
     LUMINA_REQUIRE_KERNELS();
     const SceneGoal& goal = std::get<1>(GetParam());
-    const StoredReferenceFigures f = measureAgainstStoredReference(device(), shaders(), goal.scene, "medium");
+    const StoredReferenceFigures f =
+        measureAgainstStoredReference(device(), shaders(), goal.scene, goal.preset);
     ASSERT_TRUE(f.referenceSized) << goal.scene << ": stored reference is not 128x128";
     EXPECT_TRUE(f.converged) << goal.scene << ": surface cache not converged after " << f.frames << " frames";
     EXPECT_EQ(f.nonFinitePixels, 0u);
@@ -47,7 +49,9 @@ TEST_P(FrameVsStoredReferenceGpu, LumenMeetsItsSceneGoal) {
 }
 
 std::string goalName(const ::testing::TestParamInfo<std::tuple<rhi::Api, SceneGoal>>& info) {
-    return std::string(rhi::apiName(std::get<0>(info.param))) + "_" + std::get<1>(info.param).scene;
+    const SceneGoal& goal = std::get<1>(info.param);
+    const std::string preset = goal.preset == std::string("medium") ? "" : std::string("_") + goal.preset;
+    return std::string(rhi::apiName(std::get<0>(info.param))) + "_" + goal.scene + preset;
 }
 
 // The goal (issue 26): relMSE at most a twentieth of direct-only's in the Cornell boxes and the
@@ -70,6 +74,11 @@ const SceneGoal kSceneGoals[] = {
     // wall, as direct-only has them; the 1,024-spp reference's own noise is large here (the sun
     // patch is found by few paths).
     {.scene = "sunlit_rooms", .relMseFraction = 0.75, .meanTolerance = 0.05},
+    // 0.613, 1.074 (direct-only's error is 0.434 at high, with its finer shadow map): the high
+    // preset's 9 cm radiosity blocks under the zero-thickness ceiling hold no texel with clearance,
+    // and their probes were pushed up through it to read the sky and the sunlit roof (0.662,
+    // 1.185; docs/gi.md, energy 18.).
+    {.scene = "sunlit_rooms", .relMseFraction = 0.64, .meanTolerance = 0.1, .preset = "high"},
 };
 
 INSTANTIATE_TEST_SUITE_P(Scenes, FrameVsStoredReferenceGpu,
