@@ -18,8 +18,9 @@ struct RadiosityTraceSettings {
     float filterMinCosine = 0.9f; // neighbours whose normals differ more are not filtered in
 };
 
-// Where probe rays start, off the surface along its normal (world units): the setting, or two
-// global-SDF voxels. Also how far in front a texel must be free for it to count as visible.
+// Where probe rays start, off the surface along its normal (world units): the setting, or one
+// global-SDF voxel. Whether a texel is buried does not depend on it (atlasTexelBuried looks two
+// voxels ahead, surface_cache_texel.hlsli).
 float radiosityOriginOffset(const RadiosityTraceSettings& settings, const sdf::SceneSdf& sdf);
 
 class RadiosityPass {
