@@ -5,12 +5,32 @@
 #include "gi/image/exr.h"
 #include "gi/image/png.h"
 #include "gi/screen_probes/screen_probe_readback.h"
+#include "gi/surface_cache/surface_cache_at_pixels.h"
 #include "gi/surface_cache/surface_cache_dump.h"
 
 #include <cctype>
 #include <string>
 
 namespace lumina::gi {
+
+namespace {
+
+// The cache's final lighting under each pixel (gi/surface_cache/surface_cache_at_pixels.h):
+// compared with a reference, the cache's share of the frame's error.
+std::filesystem::path dumpCacheAtPixels(rhi::IDevice& device, const FrameRenderer& renderer,
+                                        const surface_cache::SurfaceCache& cache,
+                                        const std::filesystem::path& directory) {
+    const GBuffer& gbuffer = renderer.deferred().gbuffer();
+    const surface_cache::CacheAtPixels atPixels = surface_cache::cacheAtPixels(
+        readTextureImage(device, *gbuffer.position), readTextureImage(device, *gbuffer.normal),
+        cache.readLayer(surface_cache::AtlasLayer::FinalLighting), cache.atlas().size(),
+        cache.cards().cards());
+    const std::filesystem::path path = directory / "surface_cache_at_pixels.exr";
+    image::writeExr(path, atPixels.radiance);
+    return path;
+}
+
+} // namespace
 
 std::vector<std::filesystem::path> dumpFrameBuffers(rhi::IDevice& device, const FrameRenderer& renderer,
                                                     const std::filesystem::path& directory,
@@ -47,6 +67,7 @@ std::vector<std::filesystem::path> dumpFrameBuffers(rhi::IDevice& device, const 
              surface_cache::dumpSurfaceCache(device, lumen->surfaceCache(), directory, display)) {
             written.push_back(std::move(path));
         }
+        written.push_back(dumpCacheAtPixels(device, renderer, lumen->surfaceCache(), directory));
         for (auto& path : dumpScreenProbeBuffers(device, lumen->screenProbes(), directory)) {
             written.push_back(std::move(path));
         }
@@ -55,6 +76,7 @@ std::vector<std::filesystem::path> dumpFrameBuffers(rhi::IDevice& device, const 
         for (auto& path : surface_cache::dumpSurfaceCache(device, ddgi->surfaceCache(), directory, display)) {
             written.push_back(std::move(path));
         }
+        written.push_back(dumpCacheAtPixels(device, renderer, ddgi->surfaceCache(), directory));
     }
     return written;
 }
