@@ -97,6 +97,7 @@ std::vector<uint32_t> RadiositySchedule::next(bool refineConverged) {
     // Picked fewest-updates first: the first is the least-updated tile.
     const uint32_t passes = tiles_[order[0]].updates;
     lastBlend_ = passes < required_ ? 1.0f : 1.0f / float(passes - required_ + 2);
+    lastPass_ = passes;
     std::vector<uint32_t> picked;
     picked.reserve(count);
     for (size_t i = 0; i < count; ++i) {

@@ -44,6 +44,10 @@ public:
     // 1 / (k + 1) in the k-th refinement pass (taken from the least-updated tile picked; with a
     // budget below the tile count the picked tiles differ by at most one pass).
     float lastBlend() const { return lastBlend_; }
+    // Which update this one is for its tiles since the last restart (the same least-updated tile):
+    // the radiosity trace's ray pattern, so that two runs which converge after a restart average
+    // the same patterns, whatever ran before.
+    uint32_t lastPass() const { return lastPass_; }
 
     // Bounces every tile has had since the last restart.
     uint32_t completedBounces() const;
@@ -63,6 +67,7 @@ private:
     uint32_t required_ = 1;
     uint64_t counter_ = 0;
     float lastBlend_ = 1.0f;
+    uint32_t lastPass_ = 0;
     std::vector<TileState> tiles_;
     static constexpr uint32_t kNoSlot = 0xFFFFFFFFu;
     std::vector<uint32_t> slot_; // per atlas tile index: its entry in tiles_, or kNoSlot

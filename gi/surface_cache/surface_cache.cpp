@@ -307,7 +307,8 @@ void SurfaceCache::update(gi::FrameContext& frame, const std::optional<gi::Shado
     } else {
         radiosityTiles_.recordUpload(frame.commands(), tiles);
         const AtlasSurfaceBindings surfaces{atlas_, tileOwner_.texture(), cardBuffer_, capture_.depth()};
-        radiosity_.record(frame, surfaces, voxels_, radiosityTiles_, updates_, schedule_.lastBlend());
+        radiosity_.record(frame, surfaces, voxels_, radiosityTiles_, schedule_.lastPass(),
+                          schedule_.lastBlend());
         indirectChanged_ = true;
     }
     ++updates_;

@@ -126,11 +126,11 @@ LUMINA_STATIC_ASSERT_OFFSET(VoxelGridInfo, dims, 16);
 
 struct VoxelInjectConstants {
     VoxelGridInfo grid;
-    uint atlasSize;            // texels per side
-    uint tileCount;            // tiles in the list
-    uint tilesPerRow;          // tiles per atlas row
-    uint updateIndex;          // the dither of resolve's half rounding
-    float nominalTexelArea;    // world area of a texel at the cache's full density (1 / texelsPerUnit^2)
+    uint atlasSize;         // texels per side
+    uint tileCount;         // tiles in the list
+    uint tilesPerRow;       // tiles per atlas row
+    uint updateIndex;       // the dither of resolve's half rounding
+    float nominalTexelArea; // world area of a texel at the cache's full density (1 / texelsPerUnit^2)
     float injectPadding0;
     float injectPadding1;
     float injectPadding2;
@@ -144,7 +144,7 @@ struct RadiosityConstants {
     uint atlasSize;        // texels per side
     uint tileCount;        // tiles in the list
     uint tilesPerRow;      // tiles per atlas row
-    uint updateIndex;      // rotates the rays from update to update
+    uint updateIndex;      // the rays' pattern: the tiles' updates since radiosity last restarted
     float originOffset;    // ray origin offset along the normal (world, x the cascade scale where it is)
     float maxDistance;     // of a ray (world)
     float filterMinCosine; // the spatial filter skips neighbours whose normals differ more

@@ -107,10 +107,21 @@ TEST(RadiositySchedule, BudgetDirtyFirstThenOldestUntilConverged) {
     EXPECT_TRUE(schedule.converged());
     EXPECT_TRUE(schedule.next().empty()) << "not forced: still nothing to do";
 
-    // A light moved: everything runs again.
+    // A light moved: everything runs again, and the ray patterns start over with the passes
+    // (lastPass: the least-updated picked tile's updates before this one), so that a run which
+    // converges again averages the patterns a fresh run would.
+    EXPECT_GT(schedule.lastPass(), 0u);
     schedule.restart();
     EXPECT_FALSE(schedule.converged());
     EXPECT_EQ(schedule.next().size(), 4u);
+    EXPECT_EQ(schedule.lastPass(), 0u);
+    // Ten tiles at four a time: the third update still picks two that had none.
+    for (int update = 0; update < 2; ++update) {
+        schedule.next();
+        EXPECT_EQ(schedule.lastPass(), 0u);
+    }
+    schedule.next();
+    EXPECT_EQ(schedule.lastPass(), 1u);
 }
 
 TEST(RadiositySchedule, NewTilesStartDirtyAndKeptTilesKeepTheirBounces) {
