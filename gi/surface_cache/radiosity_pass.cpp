@@ -69,7 +69,7 @@ gpu::RadiosityRayStats RadiosityPass::readRayStats(rhi::IDevice& device) const {
 }
 
 void RadiosityPass::record(gi::FrameContext& frame, const AtlasSurfaceBindings& surfaces,
-                           const VoxelLightingPass& voxels, const AtlasTileList& tiles, uint32_t pass,
+                           const VoxelLightingPass& voxels, const AtlasTileList& tiles, uint32_t rayPattern,
                            float blend) const {
     if (tiles.count() == 0) {
         for (const char* pass : {kTracePassName, kFilterPassName, kIntegratePassName}) {
@@ -81,7 +81,7 @@ void RadiosityPass::record(gi::FrameContext& frame, const AtlasSurfaceBindings& 
                                             .atlasSize = surfaces.atlas.size(),
                                             .tileCount = tiles.count(),
                                             .tilesPerRow = tiles.tilesPerRow(),
-                                            .updateIndex = pass,
+                                            .updateIndex = rayPattern,
                                             .originOffset = originOffset_,
                                             .maxDistance = maxDistance_,
                                             .filterMinCosine = filterMinCosine_,

@@ -35,11 +35,11 @@ public:
 
     // Zeroes the probes; record once before the first update.
     void recordClear(rhi::ICommandList& commands) const;
-    // One bounce on the listed tiles; `pass` picks the rays' pattern (RadiositySchedule::lastPass),
+    // One bounce on the listed tiles; `rayPattern` picks the rays' pattern (RadiositySchedule::lastPass),
     // `blend` weighs the new trace against the probes' history (1: replace;
     // RadiositySchedule::lastBlend). Skips (with the reason) when the list is empty.
     void record(gi::FrameContext& frame, const AtlasSurfaceBindings& surfaces,
-                const VoxelLightingPass& voxels, const AtlasTileList& tiles, uint32_t pass,
+                const VoxelLightingPass& voxels, const AtlasTileList& tiles, uint32_t rayPattern,
                 float blend = 1.0f) const;
 
     const rhi::BufferHandle& probes() const { return filtered_; }

@@ -17,7 +17,6 @@ CacheAtPixels cacheAtPixels(const image::Image& position, const image::Image& no
             if (normal.at("A", x, y) <= 0.0f) {
                 continue; // no surface
             }
-            ++out.surfacePixels;
             const image::Rgb pos = position.rgbAt(x, y);
             const image::Rgb nrm = normal.rgbAt(x, y);
             const glm::vec3 p(pos.r, pos.g, pos.b);

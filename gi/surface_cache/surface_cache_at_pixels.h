@@ -14,8 +14,7 @@
 namespace lumina::surface_cache {
 
 struct CacheAtPixels {
-    image::Image radiance; // R, G, B, and A: 1 where a card owns the pixel's surface, else 0
-    uint32_t surfacePixels = 0;
+    image::Image radiance;    // R, G, B, and A: 1 where a card owns the pixel's surface, else 0
     uint32_t withoutCard = 0; // surface pixels no card owns (their radiance is 0)
 };
 
