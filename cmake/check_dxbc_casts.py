@@ -28,6 +28,9 @@ FLOAT_OPS = {
     "rcp", "deriv_rtx", "deriv_rty", "sample", "sample_l", "sample_lz", "sample_d", "sample_b",
     "f32tof16",
 }
+# Instructions with two destination operands (imul writes the high and low halves, udiv the
+# quotient and remainder, sincos both results); either may be null.
+TWO_DESTINATIONS = {"imul", "umul", "udiv", "sincos", "swapc", "uaddc", "usubb"}
 LANES = "xyzw"
 OPERAND = re.compile(r"(-?\|?)(r\d+)\.([xyzw]+)")
 
@@ -54,8 +57,10 @@ def reads_of(lines, start, reg, lane, depth=0):
         op, ops = split(lines[j])
         if not ops:
             continue
-        dst = OPERAND.match(ops[0])
-        for src in ops[1:]:
+        destinations = 2 if op in TWO_DESTINATIONS else 1
+        written_regs = [m for m in (OPERAND.match(o) for o in ops[:destinations]) if m]
+        dst = written_regs[0] if written_regs else None
+        for src in ops[destinations:]:
             m = OPERAND.match(src)
             if not m or m.group(2) != reg:
                 continue
@@ -67,7 +72,7 @@ def reads_of(lines, start, reg, lane, depth=0):
                     found += reads_of(lines, j + 1, dst.group(2), written, depth + 1)
                 elif op not in ("mov", "movc"):
                     found.append((j, op, lines[j].strip()))
-        if dst and dst.group(2) == reg and lane in dst.group(3):
+        if any(d.group(2) == reg and lane in d.group(3) for d in written_regs):
             break
     return found
 
