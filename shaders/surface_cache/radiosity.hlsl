@@ -4,20 +4,18 @@
 // Surface radiosity (gi/surface_cache/radiosity_pass.h): one bounce of diffuse light between
 // the cached surfaces per update.
 //   trace:     one thread per probe (every 4x4 texels) of the listed tiles: 16 rays over the
-//              hemisphere through the global SDF, each starting on the line through the
-//              probe's own point of the surface (probeRayStart), each hit reading the voxel
-//              lighting (the last update's outgoing radiance), each ray that leaves the scene
-//              the sky (common/sky_sampling.hlsli), projected to L1 SH; counts what its rays found
+//              hemisphere through the global SDF, each hit reading the voxel lighting (the
+//              last update's outgoing radiance), each ray that leaves the scene the sky
+//              (common/sky_sampling.hlsli), projected to L1 SH; counts what its rays found
 //              (RadiosityRayStats).
 //   filter:    each probe averaged with its 4 neighbours on the same card and plane.
 //   integrate: one thread per texel: the filtered SH's irradiance at the texel's normal into
 //              the indirect layer, negatives clamped.
-// Rays are a 4 x 4 stratified grid, uniform in cos(theta) and phi, moved within its cells each
-// update and shifted per probe (gridOffset), opposite azimuths mirroring their offset in
-// cos(theta): with the uniform pdf 1 / (2 pi) the SH projection of a uniform hemisphere of
-// radiance L is exact on every update (each band's mean cos(theta) is its centre, so the mean is
-// 1/2; opposite azimuths cancel), and its L1 irradiance at the probe's normal is exactly pi L, so
-// a furnace converges to its analytic value, not to an estimator's bias.
+// Rays are a 4 x 4 stratified grid, uniform in cos(theta) and phi, at the cells' centres
+// (rotated in phi each update): with the uniform pdf 1 / (2 pi) the SH projection of a
+// uniform hemisphere of radiance L is exact (mean cos(theta) of the centres is 1/2, the phi
+// terms cancel), and its L1 irradiance at the probe's normal is exactly pi L, so a furnace
+// converges to its analytic value, not to an estimator's bias.
 #include "common/constants_shared.h"
 #include "sdf/sdf_scene_bindings.hlsli"
 #include "surface_cache/surface_cache_lighting_shared.h"
@@ -49,6 +47,8 @@ RWStructuredBuffer<uint> gRayStats : register(u2); // trace: RadiosityRayStats, 
 // entering a corner (steps shrink with the distance), and in a closed room a ray that runs out
 // reads as a miss, which lost 2.5 % of the light in the furnace at rho = 0.8.
 #define LUMINA_RADIOSITY_MAX_STEPS 256u
+// Golden-ratio step of the per-update rotation in phi: successive updates fill the circle evenly.
+#define LUMINA_GOLDEN_FRACTION 0.618033989f
 // Probe texels tried in order: the 2x2 centre of the 4x4 block first, then its border, so a
 // probe sits near its block's middle but still exists on a block only partly covered or
 // partly under another object.
@@ -163,57 +163,6 @@ float3 probeRayOriginAt(float3 world, float3 n, uint card) {
     return origin;
 }
 
-// Where this update's rays of `probe` sit on their 4 x 4 grid, as fractions of a cell. Over
-// updates: the R2 sequence (Roberts 2018), the plastic number's two steps, so that successive
-// updates fill the cells evenly in both coordinates; in integer arithmetic (2^32 times each step),
-// exact however many updates have run. x rotates phi; y places cos(theta) in its band. Per probe:
-// a hashed shift of both (a Cranley-Patterson rotation), so that neighbouring probes look in
-// different directions. With cos(theta) fixed at the bands' centres a probe saw four elevations
-// only: a source seen through a doorway between two of them was missed by every update, and one
-// that filled part of a band counted as filling all of it. With one grid for every probe, the
-// error of 16 rays was shared by a whole wall, as rings (fixed elevations) or spokes (moved
-// ones); shifted per probe it is noise, which the filter and the refinement passes average
-// (docs/gi.md, energy, 19.). The update index is read once, as an integer: vkd3d-shader merges a
-// float and an integer cast of one value (docs/d3d12.md).
-float2 gridOffset(uint updateIndex, uint2 probe) {
-    uint shift = hashUint(probe.x ^ hashUint(probe.y));
-    uint2 steps = uint2(3242174889u, 2447445414u) * updateIndex + uint2(shift, hashUint(shift));
-    return float2(steps >> 8) * (1.0f / 16777216.0f);
-}
-
-// SDF samples a ray's start may take to slide along the surface (below): enough for the three
-// steeper of the four cos(theta) bands over an open floor, the shallowest slides part way.
-#define LUMINA_RADIOSITY_SLIDE_STEPS 8u
-
-// Where one ray of a probe starts. The probe's origin sits h above its texel's plane (lifted and
-// pushed), and a ray from there sees the room from h up: nearer the ceiling, with the lowest strip
-// of the walls below its horizon, which brightened every room lit from above by 4-11 % a voxel of
-// lift (docs/gi.md, energy, 19.). The texel's own view along `dir` is the line through the point
-// of the plane under the origin; it reaches height h a distance h tan(theta) along the surface
-// from there. So the start slides that far from the origin along the surface, in the ray's
-// direction, as far as free space reaches: each step keeps the clearance, certified by the SDF
-// at the step's start (any point within distance d of a sample of d is free).
-float3 probeRayStart(float3 origin, float3 world, float3 n, float3 dir, float cosTheta) {
-    float height = dot(origin - world, n);
-    float3 along = dir - cosTheta * n;
-    float sinTheta = length(along);
-    if (height <= 0.0f || sinTheta <= 1e-4f || cosTheta <= 0.0f) {
-        return origin;
-    }
-    along /= sinTheta;
-    float wanted = height * sinTheta / cosTheta;
-    float slid = 0.0f;
-    for (uint step = 0u; step < LUMINA_RADIOSITY_SLIDE_STEPS && slid < wanted; ++step) {
-        float3 p = origin + slid * along;
-        float free = sdfSampleGlobal(p) - originClearance(p);
-        if (free <= 0.0f) {
-            break;
-        }
-        slid = min(slid + free, wanted);
-    }
-    return origin + slid * along;
-}
-
 [numthreads(LUMINA_LINEAR_GROUP_SIZE, 1, 1)] void trace(uint3 id
                                   : SV_DispatchThreadID) {
     uint2 probe;
@@ -265,24 +214,19 @@ float3 probeRayStart(float3 origin, float3 world, float3 n, float3 dir, float co
 
     SdfTraceParams params = sdfDefaultTraceParams(gConstants.maxDistance);
     params.maxSteps = LUMINA_RADIOSITY_MAX_STEPS;
-    float2 offset = gridOffset(gConstants.updateIndex, probe);
+    float rotation = frac(float(gConstants.updateIndex) * LUMINA_GOLDEN_FRACTION);
     float4 shR = float4(0.0f, 0.0f, 0.0f, 0.0f);
     float4 shG = shR;
     float4 shB = shR;
     uint stats[LUMINA_RADIOSITY_STAT_COUNT] = {0u, 0u, 0u, 0u, 0u, 0u};
     for (uint ray = 0u; ray < LUMINA_RADIOSITY_RAYS; ++ray) {
-        uint column = ray % LUMINA_RADIOSITY_RAYS_PER_SIDE;
-        // Opposite azimuths (columns 0 and 2, 1 and 3) share an elevation offset and the other
-        // pair takes its mirror, so each band's mean cos(theta) stays at its centre and a uniform
-        // hemisphere still projects exactly on every update.
-        float inBand = (column & 1u) == 0u ? offset.y : 1.0f - offset.y;
         float cosTheta =
-            (float(ray / LUMINA_RADIOSITY_RAYS_PER_SIDE) + inBand) / float(LUMINA_RADIOSITY_RAYS_PER_SIDE);
-        float phi = 2.0f * LUMINA_PI * (float(column) + offset.x) /
+            (float(ray / LUMINA_RADIOSITY_RAYS_PER_SIDE) + 0.5f) / float(LUMINA_RADIOSITY_RAYS_PER_SIDE);
+        float phi = 2.0f * LUMINA_PI * (float(ray % LUMINA_RADIOSITY_RAYS_PER_SIDE) + rotation) /
                     float(LUMINA_RADIOSITY_RAYS_PER_SIDE);
         float sinTheta = sqrt(max(1.0f - cosTheta * cosTheta, 0.0f));
         float3 dir = normalize(sinTheta * cos(phi) * t1 + sinTheta * sin(phi) * t2 + cosTheta * n);
-        SdfHit hit = sdfTraceGlobal(probeRayStart(origin, world, n, dir, cosTheta), dir, 0.0f, params);
+        SdfHit hit = sdfTraceGlobal(origin, dir, 0.0f, params);
         // A ray that leaves the scene sees the sky. One that ran out of steps (grazing a wall, deep
         // in a corner) is a miss too, but it is still inside: it sees nothing rather than a sky
         // that a closed room would not show it.
