@@ -4,6 +4,7 @@
 // (gi/screen_probes/probe_trace_bindings.h): the SDF scene (b0, t0-t5, s0), the constants (b1),
 // this frame's probes (t6) and the rays (t7); and where a probe's rays start.
 #include "sdf/sdf_scene_bindings.hlsli"
+#include "sdf/surface_line_start.hlsli"
 #include "screen_probes/screen_probe_common.hlsli"
 
 #define LUMINA_SP_ORIGIN_PUSH_STEPS 4u
@@ -41,6 +42,17 @@ float3 probeRayOrigin(ScreenProbe p) {
         origin += push * (clearance - distance);
     }
     return origin;
+}
+
+// Where one ray of a probe starts: slid from the origin along the probe's surface onto the line
+// through the probe's own point (surface_line_start.hlsli), keeping half the push's clearance free.
+// From the origin, two voxels up, every ray saw the scene as from a point two voxels into the room:
+// two_rooms read 3.5 % bright (docs/gi.md, energy 21.). Both fields start a ray here, so the far
+// field continues the line the near field covered.
+float3 probeRayStart(ScreenProbe p, float3 origin, float3 direction) {
+    const float marginVoxels = 0.25 * gSp.originBias / sdfGlobalVoxelSize(0u);
+    return surfaceLineStart(origin, p.positionAndDepth.xyz, p.normal.xyz, direction, dot(direction, p.normal.xyz),
+                            marginVoxels);
 }
 
 groupshared float3 gsRayOrigin;

@@ -27,6 +27,7 @@ RWStructuredBuffer<SdfHit> gHits : register(u0);
             continue;
         }
         const float3 direction = gRays[ray].directionAndWeight.xyz;
-        gHits[ray] = sdfConeTraceGlobal(origin, direction, tMin, gSp.coneTanHalfAngle, params);
+        gHits[ray] = sdfConeTraceGlobal(probeRayStart(gProbes[probe], origin, direction), direction, tMin,
+                                        gSp.coneTanHalfAngle, params);
     }
 }

@@ -42,10 +42,10 @@ float4 nearFieldRadiance(SdfHit hit, float3 direction) {
     return float4(sampleVoxelLighting(gSp.voxelGrid, p, n, seenFrom), float(LUMINA_SP_NEAR_VOXEL));
 }
 
-// Traces ray `ray` of a probe from `origin`: the hit record and the near-field result.
-void traceNearField(uint ray, float3 origin) {
+// Traces ray `ray` of `probe`, whose origin is `origin`: the hit record and the near-field result.
+void traceNearField(uint ray, ScreenProbe probe, float3 origin) {
     const float3 direction = gRays[ray].directionAndWeight.xyz;
-    const SdfHit hit = sdfTraceNearField(origin, direction, 0.0, sdfDefaultTraceParams(gSp.nearFieldDistance));
+    const SdfHit hit = sdfTraceNearField(probeRayStart(probe, origin, direction), direction, 0.0, sdfDefaultTraceParams(gSp.nearFieldDistance));
     gHits[ray] = hit;
     gNearField[ray] = sdfIsMiss(hit) ? float4(0.0, 0.0, 0.0, float(LUMINA_SP_NEAR_MISS))
                                      : nearFieldRadiance(hit, direction);
@@ -60,6 +60,6 @@ void traceNearField(uint ray, float3 origin) {
         return;
     }
     for (uint r = t; r < gSp.raysPerProbe; r += LUMINA_SP_PROBE_TEXELS) {
-        traceNearField(probe * gSp.raysPerProbe + r, origin);
+        traceNearField(probe * gSp.raysPerProbe + r, gProbes[probe], origin);
     }
 }

@@ -4,20 +4,24 @@
 // Surface radiosity (gi/surface_cache/radiosity_pass.h): one bounce of diffuse light between
 // the cached surfaces per update.
 //   trace:     one thread per probe (every 4x4 texels) of the listed tiles: 16 rays over the
-//              hemisphere through the global SDF, each hit reading the voxel lighting (the
-//              last update's outgoing radiance), each ray that leaves the scene the sky
-//              (common/sky_sampling.hlsli), projected to L1 SH; counts what its rays found
-//              (RadiosityRayStats).
+//              hemisphere through the global SDF, each starting on the line through the
+//              probe's own point of the surface (surfaceLineStart), each hit reading the voxel
+//              lighting (the last update's outgoing radiance), each ray that leaves the scene
+//              the sky (common/sky_sampling.hlsli), projected to L1 SH whose irradiance at the
+//              probe's normal is the rays' exact cosine-weighted sum (withIrradianceAt); counts
+//              what its rays found (RadiosityRayStats).
 //   filter:    each probe averaged with its 4 neighbours on the same card and plane.
 //   integrate: one thread per texel: the filtered SH's irradiance at the texel's normal into
 //              the indirect layer, negatives clamped.
-// Rays are a 4 x 4 stratified grid, uniform in cos(theta) and phi, at the cells' centres
-// (rotated in phi each update): with the uniform pdf 1 / (2 pi) the SH projection of a
-// uniform hemisphere of radiance L is exact (mean cos(theta) of the centres is 1/2, the phi
-// terms cancel), and its L1 irradiance at the probe's normal is exactly pi L, so a furnace
-// converges to its analytic value, not to an estimator's bias.
+// Rays are a 4 x 4 stratified grid, uniform in cos(theta) and phi, moved within its cells each
+// update and shifted per probe (gridOffset), opposite azimuths mirroring their offset in
+// cos(theta): with the uniform pdf 1 / (2 pi) the SH projection of a uniform hemisphere of
+// radiance L is exact on every update (each band's mean cos(theta) is its centre, so the mean is
+// 1/2; opposite azimuths cancel), and its L1 irradiance at the probe's normal is exactly pi L, so
+// a furnace converges to its analytic value, not to an estimator's bias.
 #include "common/constants_shared.h"
 #include "sdf/sdf_scene_bindings.hlsli"
+#include "sdf/surface_line_start.hlsli"
 #include "surface_cache/surface_cache_lighting_shared.h"
 #include "surface_cache/surface_card_shared.h"
 
@@ -47,8 +51,6 @@ RWStructuredBuffer<uint> gRayStats : register(u2); // trace: RadiosityRayStats, 
 // entering a corner (steps shrink with the distance), and in a closed room a ray that runs out
 // reads as a miss, which lost 2.5 % of the light in the furnace at rho = 0.8.
 #define LUMINA_RADIOSITY_MAX_STEPS 256u
-// Golden-ratio step of the per-update rotation in phi: successive updates fill the circle evenly.
-#define LUMINA_GOLDEN_FRACTION 0.618033989f
 // Probe texels tried in order: the 2x2 centre of the 4x4 block first, then its border, so a
 // probe sits near its block's middle but still exists on a block only partly covered or
 // partly under another object.
@@ -163,6 +165,53 @@ float3 probeRayOriginAt(float3 world, float3 n, uint card) {
     return origin;
 }
 
+// Where this update's rays of `probe` sit on their 4 x 4 grid, as fractions of a cell. Over
+// updates: the R2 sequence (Roberts 2018), the plastic number's two steps, so that successive
+// updates fill the cells evenly in both coordinates; in integer arithmetic (2^32 times each step),
+// exact however many updates have run. x rotates phi; y places cos(theta) in its band. Per probe:
+// a hashed shift of both (a Cranley-Patterson rotation), so that neighbouring probes look in
+// different directions. With cos(theta) fixed at the bands' centres a probe saw four elevations
+// only: a source seen through a doorway between two of them was missed by every update, and one
+// that filled part of a band counted as filling all of it. With one grid for every probe, the
+// error of 16 rays was shared by a whole wall, as rings (fixed elevations) or spokes (moved
+// ones); shifted per probe it is noise, which the filter and the refinement passes average
+// (docs/gi.md, energy, 19.). The update index is read once, as an integer: vkd3d-shader merges a
+// float and an integer cast of one value (docs/d3d12.md).
+float2 gridOffset(uint updateIndex, uint2 probe) {
+    uint shift = hashUint(probe.x ^ hashUint(probe.y));
+    uint2 steps = uint2(3242174889u, 2447445414u) * updateIndex + uint2(shift, hashUint(shift));
+    return float2(steps >> 8) * (1.0f / 16777216.0f);
+}
+
+// The free space a sliding ray start keeps (surface_line_start.hlsli), as a fraction of the
+// origin's clearance. A pushed origin sits at its clearance, so a slide that kept all of it never
+// found room for a first step and the ray started where the lift put it: an overhead source seen
+// from there looks larger, and the first bounce read 13 % bright (two_rooms; 1.05 with this
+// margin; docs/gi.md, energy 20.).
+#define LUMINA_RADIOSITY_SLIDE_MARGIN 0.5f
+
+// Irradiance of L1 SH at normal n, the cosine lobe's band factors pi and 2 pi / 3
+// (Ramamoorthi and Hanrahan 2001), unclamped.
+float shIrradianceL1(float4 sh, float3 n) {
+    return LUMINA_PI * LUMINA_SH_Y00 * sh.x + (2.0f * LUMINA_PI / 3.0f) * LUMINA_SH_Y1 * dot(sh.yzw, n);
+}
+
+// L1 can dip below zero opposite bright light: clamped.
+float shIrradiance(float4 sh, float3 n) {
+    return max(shIrradianceL1(sh, n), 0.0f);
+}
+
+// `sh` with its L0 moved so that its irradiance at n is `irradiance`, its direction kept. L1 is a
+// low-pass of the cosine lobe: under a source overhead it reads a quarter low, and around a
+// source near the horizon high, and that loss had been cancelling the excess of rays that started
+// above their texel (docs/gi.md, energy 17., 20.). The rays' own cosine-weighted sum is the exact
+// estimate at the probe's normal; the texels of a probe's block share that normal, and the
+// direction still serves the filter's neighbours, whose normals may differ by a little.
+float4 withIrradianceAt(float4 sh, float3 n, float irradiance) {
+    sh.x += (irradiance - shIrradianceL1(sh, n)) / (LUMINA_PI * LUMINA_SH_Y00);
+    return sh;
+}
+
 [numthreads(LUMINA_LINEAR_GROUP_SIZE, 1, 1)] void trace(uint3 id
                                   : SV_DispatchThreadID) {
     uint2 probe;
@@ -214,19 +263,27 @@ float3 probeRayOriginAt(float3 world, float3 n, uint card) {
 
     SdfTraceParams params = sdfDefaultTraceParams(gConstants.maxDistance);
     params.maxSteps = LUMINA_RADIOSITY_MAX_STEPS;
-    float rotation = frac(float(gConstants.updateIndex) * LUMINA_GOLDEN_FRACTION);
+    float2 offset = gridOffset(gConstants.updateIndex, probe);
     float4 shR = float4(0.0f, 0.0f, 0.0f, 0.0f);
     float4 shG = shR;
     float4 shB = shR;
+    float3 irradiance = float3(0.0f, 0.0f, 0.0f);
     uint stats[LUMINA_RADIOSITY_STAT_COUNT] = {0u, 0u, 0u, 0u, 0u, 0u};
     for (uint ray = 0u; ray < LUMINA_RADIOSITY_RAYS; ++ray) {
+        uint column = ray % LUMINA_RADIOSITY_RAYS_PER_SIDE;
+        // Opposite azimuths (columns 0 and 2, 1 and 3) share an elevation offset and the other
+        // pair takes its mirror, so each band's mean cos(theta) stays at its centre and a uniform
+        // hemisphere still projects exactly on every update.
+        float inBand = (column & 1u) == 0u ? offset.y : 1.0f - offset.y;
         float cosTheta =
-            (float(ray / LUMINA_RADIOSITY_RAYS_PER_SIDE) + 0.5f) / float(LUMINA_RADIOSITY_RAYS_PER_SIDE);
-        float phi = 2.0f * LUMINA_PI * (float(ray % LUMINA_RADIOSITY_RAYS_PER_SIDE) + rotation) /
+            (float(ray / LUMINA_RADIOSITY_RAYS_PER_SIDE) + inBand) / float(LUMINA_RADIOSITY_RAYS_PER_SIDE);
+        float phi = 2.0f * LUMINA_PI * (float(column) + offset.x) /
                     float(LUMINA_RADIOSITY_RAYS_PER_SIDE);
         float sinTheta = sqrt(max(1.0f - cosTheta * cosTheta, 0.0f));
         float3 dir = normalize(sinTheta * cos(phi) * t1 + sinTheta * sin(phi) * t2 + cosTheta * n);
-        SdfHit hit = sdfTraceGlobal(origin, dir, 0.0f, params);
+        float3 start = surfaceLineStart(origin, world, n, dir, cosTheta,
+                                        LUMINA_RADIOSITY_SLIDE_MARGIN * LUMINA_RADIOSITY_CLEARANCE_VOXELS);
+        SdfHit hit = sdfTraceGlobal(start, dir, 0.0f, params);
         // A ray that leaves the scene sees the sky. One that ran out of steps (grazing a wall, deep
         // in a corner) is a miss too, but it is still inside: it sees nothing rather than a sky
         // that a closed room would not show it.
@@ -255,6 +312,7 @@ float3 probeRayOriginAt(float3 world, float3 n, uint card) {
         shR += radiance.r * basis;
         shG += radiance.g * basis;
         shB += radiance.b * basis;
+        irradiance += radiance * (cosTheta * 2.0f * LUMINA_PI / float(LUMINA_RADIOSITY_RAYS));
     }
     for (uint k = 0u; k < LUMINA_RADIOSITY_STAT_COUNT; ++k) {
         uint ignored;
@@ -263,9 +321,9 @@ float3 probeRayOriginAt(float3 world, float3 n, uint card) {
         }
     }
     RadiosityProbe result;
-    result.r = shR;
-    result.g = shG;
-    result.b = shB;
+    result.r = withIrradianceAt(shR, n, irradiance.r);
+    result.g = withIrradianceAt(shG, n, irradiance.g);
+    result.b = withIrradianceAt(shB, n, irradiance.b);
     result.normalAndTexel = float4(n, float(slot + 1u));
     // Refinement (radiosity_schedule.h): the mean of this trace and the history, weighted
     // 1 / (k + 1) for the k-th pass, so that rotated ray sets average out; a convex combination,
@@ -350,13 +408,6 @@ bool probeSeesProbe(float3 from, float3 to) {
     sum.b /= count;
     sum.normalAndTexel = centre.normalAndTexel;
     gProbesOut[probeIndex(probe)] = sum;
-}
-
-// Irradiance of L1 SH at normal n, the cosine lobe's band factors pi and 2 pi / 3
-// (Ramamoorthi and Hanrahan 2001); L1 can dip below zero opposite bright light: clamped.
-float shIrradiance(float4 sh, float3 n) {
-    return max(LUMINA_PI * LUMINA_SH_Y00 * sh.x + (2.0f * LUMINA_PI / 3.0f) * LUMINA_SH_Y1 * dot(sh.yzw, n),
-               0.0f);
 }
 
 [numthreads(LUMINA_LINEAR_GROUP_SIZE, 1, 1)] void integrate(uint3 id

@@ -69,6 +69,9 @@ constexpr uint32_t kEarlyFrames = 2;
 // cache equal to the half-float rounding both times: how far the rays have drifted depends on
 // where the PDFs happen to sit, so the bound is about twice the largest seen. The gather, the
 // screen temporal result and the frame, where those rays average out, keep kLighting on both APIs.
+// Since the luminance in the lighting PDF is cut to 4 mantissa bits and the radiosity slide's loop
+// reads alike on both compilers (docs/gi.md, energy 22.), the ray radiance's 99th percentile is
+// 0.00024 (cornell_box) and 0.0037 (open_top_box).
 constexpr GoldenTolerance kPerRayLightingD3d12{
     .meanAbsError = 0.005, .percentile = 0.99, .percentileError = 0.15};
 

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <iostream>
 #include <string>
 
 namespace lumina::test {
@@ -151,6 +152,8 @@ CornellFigures measure(rhi::IDevice& device, rhi::ShaderLibrary& shaders, const 
 // the mean radiance checks the energy, the relMSE the per-pixel error (0.54 and 0.32 before the
 // refinement passes averaged the probes' 16-ray traces).
 void expectNear(const CornellFigures& f, double meanTolerance, double relMseBound) {
+    std::cout << "cache against the path tracer: relMSE " << f.relMse << ", mean "
+              << f.meanCache / f.meanReference << " of the reference's\n";
     EXPECT_GT(f.pixels, kImageSize * kImageSize / 2);
     EXPECT_LT(f.missing, f.pixels / 100);
     EXPECT_TRUE(std::isfinite(f.relMse));
