@@ -175,10 +175,15 @@ float3 probeRayOriginAt(float3 world, float3 n, uint card) {
 // that filled part of a band counted as filling all of it. With one grid for every probe, the
 // error of 16 rays was shared by a whole wall, as rings (fixed elevations) or spokes (moved
 // ones); shifted per probe it is noise, which the filter and the refinement passes average
-// (docs/gi.md, energy, 19.). The update index is read once, as an integer: vkd3d-shader merges a
-// float and an integer cast of one value (docs/d3d12.md).
-float2 gridOffset(uint updateIndex, uint2 probe) {
-    uint shift = hashUint(probe.x ^ hashUint(probe.y));
+// (docs/gi.md, energy, 19.). The shift is a property of the surface, not of where the atlas
+// holds it: hashed from the card and the probe's place on the card, so a card re-placed in the
+// atlas (a moved or rescaled instance, a new density) converges to the same light; hashed from the
+// atlas position, a card re-placed after a one-frame scale of 1e6 averaged other ray sets than a
+// run without it, and the screen probes, steered by that light, stayed 0.05 apart (PoisonStress,
+// bound 0.03; docs/gi.md, energy 22.). The update index is read once, as an integer: vkd3d-shader
+// merges a float and an integer cast of one value (docs/d3d12.md).
+float2 gridOffset(uint updateIndex, uint card, uint2 probeOnCard) {
+    uint shift = hashUint(card ^ hashUint(probeOnCard.x ^ hashUint(probeOnCard.y)));
     uint2 steps = uint2(3242174889u, 2447445414u) * updateIndex + uint2(shift, hashUint(shift));
     return float2(steps >> 8) * (1.0f / 16777216.0f);
 }
@@ -263,7 +268,8 @@ float4 withIrradianceAt(float4 sh, float3 n, float irradiance) {
 
     SdfTraceParams params = sdfDefaultTraceParams(gConstants.maxDistance);
     params.maxSteps = LUMINA_RADIOSITY_MAX_STEPS;
-    float2 offset = gridOffset(gConstants.updateIndex, probe);
+    float2 offset =
+        gridOffset(gConstants.updateIndex, card, probe - gCards[card].atlasRect.xy / LUMINA_RADIOSITY_PROBE_SPACING);
     float4 shR = float4(0.0f, 0.0f, 0.0f, 0.0f);
     float4 shG = shR;
     float4 shB = shR;

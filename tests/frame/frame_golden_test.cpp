@@ -71,7 +71,7 @@ constexpr uint32_t kEarlyFrames = 2;
 // screen temporal result and the frame, where those rays average out, keep kLighting on both APIs.
 // Since the luminance in the lighting PDF is cut to 4 mantissa bits and the radiosity slide's loop
 // reads alike on both compilers (docs/gi.md, energy 22.), the ray radiance's 99th percentile is
-// 0.00024 (cornell_box) and 0.0037 (open_top_box).
+// 0.00024 in both scenes.
 constexpr GoldenTolerance kPerRayLightingD3d12{
     .meanAbsError = 0.005, .percentile = 0.99, .percentileError = 0.15};
 
