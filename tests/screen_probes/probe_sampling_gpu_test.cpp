@@ -11,6 +11,7 @@
 #include "tests/screen_probes/screen_probe_harness.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -68,7 +69,11 @@ TEST_P(ProbeSamplingGpuTest, LightingPdfFollowsLastFramesRadianceAboveAFloor) {
         float massTotal = 0.0f, sum = 0.0f, lo = 1.0f, hi = 0.0f;
         for (uint32_t t = 0; t < LUMINA_SP_PROBE_TEXELS; ++t) {
             const gpu::float4 h = history[p * LUMINA_SP_PROBE_TEXELS + t];
-            mass[t] = h.w > 0.0f ? gpu::luminance(gpu::float3(h)) * solid[t] : 0.0f;
+            // The kernel weighs the luminance cut to 4 mantissa bits (probe_lighting_pdf.hlsl), so
+            // that an ULP of rounding between the APIs does not change the table.
+            const float l =
+                std::bit_cast<float>(std::bit_cast<uint32_t>(gpu::luminance(gpu::float3(h))) & 0xFFF80000u);
+            mass[t] = h.w > 0.0f ? l * solid[t] : 0.0f;
             massTotal += mass[t];
         }
         for (uint32_t t = 0; t < LUMINA_SP_PROBE_TEXELS; ++t) {
