@@ -51,8 +51,8 @@ float3 probeRayOrigin(ScreenProbe p) {
 // field continues the line the near field covered.
 float3 probeRayStart(ScreenProbe p, float3 origin, float3 direction) {
     const float marginVoxels = 0.25 * gSp.originBias / sdfGlobalVoxelSize(0u);
-    return surfaceLineStart(origin, p.positionAndDepth.xyz, p.normal.xyz, direction, dot(direction, p.normal.xyz),
-                            marginVoxels);
+    return surfaceLineStart(origin, p.positionAndDepth.xyz, p.normal.xyz, direction,
+                            dot(direction, p.normal.xyz), marginVoxels);
 }
 
 groupshared float3 gsRayOrigin;

@@ -45,7 +45,8 @@ float4 nearFieldRadiance(SdfHit hit, float3 direction) {
 // Traces ray `ray` of `probe`, whose origin is `origin`: the hit record and the near-field result.
 void traceNearField(uint ray, ScreenProbe probe, float3 origin) {
     const float3 direction = gRays[ray].directionAndWeight.xyz;
-    const SdfHit hit = sdfTraceNearField(probeRayStart(probe, origin, direction), direction, 0.0, sdfDefaultTraceParams(gSp.nearFieldDistance));
+    const float3 start = probeRayStart(probe, origin, direction);
+    const SdfHit hit = sdfTraceNearField(start, direction, 0.0, sdfDefaultTraceParams(gSp.nearFieldDistance));
     gHits[ray] = hit;
     gNearField[ray] = sdfIsMiss(hit) ? float4(0.0, 0.0, 0.0, float(LUMINA_SP_NEAR_MISS))
                                      : nearFieldRadiance(hit, direction);
