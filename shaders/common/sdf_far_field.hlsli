@@ -160,43 +160,92 @@ float2 sdfGlobalSegment(float3 origin, float3 direction, float tMin, float maxDi
     return float2(max(range.x, tMin), min(range.y, maxDistance));
 }
 
-// Sphere tracing of the global SDF; a hit once the distance falls below
-// params.hitThresholdVoxels global voxels, moved on to the zero crossing (sdfRefineHit). Normals from the global SDF's gradient; ids from
-// the voxel the hit lies in.
-SdfHit sdfTraceGlobal(float3 origin, float3 direction, float tMin, SdfTraceParams params) {
+// Sphere tracing of the global SDF, a step at a time: sdfGlobalMarchBegin, then sdfGlobalMarchStep
+// while it returns LUMINA_SDF_MARCH_GOING, then sdfGlobalMarchHit. sdfTraceGlobal runs one ray so;
+// a kernel that traces several rays per thread can run them one after another in a single loop
+// (radiosity.hlsl), so that a thread whose ray ends early starts its next one instead of idling
+// beside the longest ray of its neighbours.
+#define LUMINA_SDF_MARCH_GOING 0u
+#define LUMINA_SDF_MARCH_HIT 1u
+#define LUMINA_SDF_MARCH_LEFT 2u         // past the end of its segment: a miss
+#define LUMINA_SDF_MARCH_OUT_OF_STEPS 3u // params.maxSteps taken: a miss
+
+struct SdfGlobalMarch {
+    float3 origin;
+    float3 direction;
+    float tEnd;
+    float t;
+    float previousT;
+    float previousDistance;
+    uint steps;
+};
+
+SdfGlobalMarch sdfGlobalMarchBegin(float3 origin, float3 direction, float tMin, SdfTraceParams params,
+                                   out uint status) {
     float2 segment = sdfGlobalSegment(origin, direction, tMin, params.maxDistance);
-    float t = segment.x;
-    if (!(t <= segment.y)) {
-        return sdfMiss(origin, direction, params.maxDistance, 0u);
-    }
-    float previousT = -1.0f;
-    float previousDistance = 0.0f;
-    for (uint step = 0u; step < params.maxSteps; ++step) {
-        // Threshold and step in voxels of the cascade that serves this sample.
-        float3 p = origin + t * direction;
-        uint cascade = sdfGlobalCascadeAt(p);
-        float voxel = sdfGlobalVoxelSize(cascade);
-        float threshold = params.hitThresholdVoxels * voxel;
-        float minStep = params.minStepVoxels * voxel;
-        float distance = sdfSampleCascade(cascade, p);
-        if (distance < threshold) {
-            // Every surface of the global SDF has a zero crossing (open ones their shell).
-            if (previousT >= 0.0f) {
-                float refined = min(sdfRefineHit(previousT, previousDistance, t, distance, voxel), segment.y);
-                if (refined > t && abs(sdfSampleGlobal(origin + refined * direction)) <= distance) {
-                    t = refined;
-                }
+    SdfGlobalMarch march;
+    march.origin = origin;
+    march.direction = direction;
+    march.tEnd = segment.y;
+    march.t = segment.x;
+    march.previousT = -1.0f;
+    march.previousDistance = 0.0f;
+    march.steps = 0u;
+    status = !(segment.x <= segment.y) ? LUMINA_SDF_MARCH_LEFT
+             : params.maxSteps == 0u   ? LUMINA_SDF_MARCH_OUT_OF_STEPS
+                                       : LUMINA_SDF_MARCH_GOING;
+    return march;
+}
+
+// One sample: a hit once the distance falls below params.hitThresholdVoxels voxels of the cascade
+// that serves the sample, moved on to the zero crossing (sdfRefineHit); else a step of the
+// distance, at least params.minStepVoxels voxels.
+uint sdfGlobalMarchStep(inout SdfGlobalMarch march, SdfTraceParams params) {
+    march.steps += 1u;
+    float3 p = march.origin + march.t * march.direction;
+    uint cascade = sdfGlobalCascadeAt(p);
+    float voxel = sdfGlobalVoxelSize(cascade);
+    float threshold = params.hitThresholdVoxels * voxel;
+    float minStep = params.minStepVoxels * voxel;
+    float distance = sdfSampleCascade(cascade, p);
+    if (distance < threshold) {
+        // Every surface of the global SDF has a zero crossing (open ones their shell).
+        if (march.previousT >= 0.0f) {
+            float refined = min(sdfRefineHit(march.previousT, march.previousDistance, march.t, distance, voxel),
+                                march.tEnd);
+            if (refined > march.t && abs(sdfSampleGlobal(march.origin + refined * march.direction)) <= distance) {
+                march.t = refined;
             }
-            return sdfGlobalHit(origin, direction, t, step + 1u, 0.0f);
         }
-        previousT = t;
-        previousDistance = distance;
-        t += max(distance, minStep);
-        if (t > segment.y) {
-            return sdfMiss(origin, direction, params.maxDistance, step + 1u);
-        }
+        return LUMINA_SDF_MARCH_HIT;
     }
-    return sdfMiss(origin, direction, params.maxDistance, params.maxSteps);
+    march.previousT = march.t;
+    march.previousDistance = distance;
+    march.t += max(distance, minStep);
+    if (march.t > march.tEnd) {
+        return LUMINA_SDF_MARCH_LEFT;
+    }
+    return march.steps < params.maxSteps ? LUMINA_SDF_MARCH_GOING : LUMINA_SDF_MARCH_OUT_OF_STEPS;
+}
+
+// The SdfHit of a march from `origin` along `direction` that ended with `status` at `t` after
+// `steps` samples. Normals from the global SDF's gradient; ids from the voxel the hit lies in.
+SdfHit sdfGlobalMarchHit(float3 origin, float3 direction, float t, uint steps, uint status,
+                         SdfTraceParams params) {
+    if (status == LUMINA_SDF_MARCH_HIT) {
+        return sdfGlobalHit(origin, direction, t, steps, 0.0f);
+    }
+    return sdfMiss(origin, direction, params.maxDistance, steps);
+}
+
+// Sphere tracing of the global SDF, one ray (sdfGlobalMarchStep).
+SdfHit sdfTraceGlobal(float3 origin, float3 direction, float tMin, SdfTraceParams params) {
+    uint status;
+    SdfGlobalMarch march = sdfGlobalMarchBegin(origin, direction, tMin, params, status);
+    while (status == LUMINA_SDF_MARCH_GOING) {
+        status = sdfGlobalMarchStep(march, params);
+    }
+    return sdfGlobalMarchHit(march.origin, march.direction, march.t, march.steps, status, params);
 }
 
 // Cone tracing of the global SDF: a cone of half-angle atan(tanHalfAngle) around the ray.

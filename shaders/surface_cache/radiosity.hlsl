@@ -270,11 +270,14 @@ float4 withIrradianceAt(float4 sh, float3 n, float irradiance) {
     params.maxSteps = LUMINA_RADIOSITY_MAX_STEPS;
     float2 offset =
         gridOffset(gConstants.updateIndex, card, probe - gCards[card].atlasRect.xy / LUMINA_RADIOSITY_PROBE_SPACING);
-    float4 shR = float4(0.0f, 0.0f, 0.0f, 0.0f);
-    float4 shG = shR;
-    float4 shB = shR;
-    float3 irradiance = float3(0.0f, 0.0f, 0.0f);
-    uint stats[LUMINA_RADIOSITY_STAT_COUNT] = {0u, 0u, 0u, 0u, 0u, 0u};
+    // Each ray's direction and start, then every ray marched in one loop: a thread whose ray ends
+    // starts its next one at once, so that the threads of a wave, whose probes look in different
+    // directions (gridOffset), each take about the sum of their 16 rays' steps rather than all
+    // waiting, ray after ray, for the longest of them (on lavapipe the per-probe shift had cost
+    // half the trace again; docs/surface_cache.md).
+    float3 rayDirection[LUMINA_RADIOSITY_RAYS];
+    float3 rayStart[LUMINA_RADIOSITY_RAYS];
+    float rayCosTheta[LUMINA_RADIOSITY_RAYS];
     for (uint ray = 0u; ray < LUMINA_RADIOSITY_RAYS; ++ray) {
         uint column = ray % LUMINA_RADIOSITY_RAYS_PER_SIDE;
         // Opposite azimuths (columns 0 and 2, 1 and 3) share an elevation offset and the other
@@ -287,9 +290,41 @@ float4 withIrradianceAt(float4 sh, float3 n, float irradiance) {
                     float(LUMINA_RADIOSITY_RAYS_PER_SIDE);
         float sinTheta = sqrt(max(1.0f - cosTheta * cosTheta, 0.0f));
         float3 dir = normalize(sinTheta * cos(phi) * t1 + sinTheta * sin(phi) * t2 + cosTheta * n);
-        float3 start = surfaceLineStart(origin, world, n, dir, cosTheta,
-                                        LUMINA_RADIOSITY_SLIDE_MARGIN * LUMINA_RADIOSITY_CLEARANCE_VOXELS);
-        SdfHit hit = sdfTraceGlobal(start, dir, 0.0f, params);
+        rayDirection[ray] = dir;
+        rayCosTheta[ray] = cosTheta;
+        rayStart[ray] = surfaceLineStart(origin, world, n, dir, cosTheta,
+                                         LUMINA_RADIOSITY_SLIDE_MARGIN * LUMINA_RADIOSITY_CLEARANCE_VOXELS);
+    }
+    float rayEndT[LUMINA_RADIOSITY_RAYS];
+    uint rayEnd[LUMINA_RADIOSITY_RAYS]; // status | steps << 8
+    {
+        uint ray = 0u;
+        uint status;
+        SdfGlobalMarch march = sdfGlobalMarchBegin(rayStart[0], rayDirection[0], 0.0f, params, status);
+        while (ray < LUMINA_RADIOSITY_RAYS) {
+            if (status == LUMINA_SDF_MARCH_GOING) {
+                status = sdfGlobalMarchStep(march, params);
+            }
+            if (status != LUMINA_SDF_MARCH_GOING) {
+                rayEndT[ray] = march.t;
+                rayEnd[ray] = status | (march.steps << 8u);
+                ++ray;
+                if (ray < LUMINA_RADIOSITY_RAYS) {
+                    march = sdfGlobalMarchBegin(rayStart[ray], rayDirection[ray], 0.0f, params, status);
+                }
+            }
+        }
+    }
+    float4 shR = float4(0.0f, 0.0f, 0.0f, 0.0f);
+    float4 shG = shR;
+    float4 shB = shR;
+    float3 irradiance = float3(0.0f, 0.0f, 0.0f);
+    uint stats[LUMINA_RADIOSITY_STAT_COUNT] = {0u, 0u, 0u, 0u, 0u, 0u};
+    for (uint ray = 0u; ray < LUMINA_RADIOSITY_RAYS; ++ray) {
+        float3 dir = rayDirection[ray];
+        float cosTheta = rayCosTheta[ray];
+        SdfHit hit = sdfGlobalMarchHit(rayStart[ray], dir, rayEndT[ray], rayEnd[ray] >> 8u, rayEnd[ray] & 0xFFu,
+                                       params);
         // A ray that leaves the scene sees the sky. One that ran out of steps (grazing a wall, deep
         // in a corner) is a miss too, but it is still inside: it sees nothing rather than a sky
         // that a closed room would not show it.
