@@ -211,9 +211,10 @@ uint sdfGlobalMarchStep(inout SdfGlobalMarch march, SdfTraceParams params) {
     if (distance < threshold) {
         // Every surface of the global SDF has a zero crossing (open ones their shell).
         if (march.previousT >= 0.0f) {
-            float refined = min(sdfRefineHit(march.previousT, march.previousDistance, march.t, distance, voxel),
-                                march.tEnd);
-            if (refined > march.t && abs(sdfSampleGlobal(march.origin + refined * march.direction)) <= distance) {
+            float refined = min(
+                sdfRefineHit(march.previousT, march.previousDistance, march.t, distance, voxel), march.tEnd);
+            if (refined > march.t &&
+                abs(sdfSampleGlobal(march.origin + refined * march.direction)) <= distance) {
                 march.t = refined;
             }
         }

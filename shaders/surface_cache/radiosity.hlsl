@@ -323,8 +323,8 @@ float4 withIrradianceAt(float4 sh, float3 n, float irradiance) {
     for (uint ray = 0u; ray < LUMINA_RADIOSITY_RAYS; ++ray) {
         float3 dir = rayDirection[ray];
         float cosTheta = rayCosTheta[ray];
-        SdfHit hit = sdfGlobalMarchHit(rayStart[ray], dir, rayEndT[ray], rayEnd[ray] >> 8u, rayEnd[ray] & 0xFFu,
-                                       params);
+        SdfHit hit = sdfGlobalMarchHit(rayStart[ray], dir, rayEndT[ray], rayEnd[ray] >> 8u,
+                                       rayEnd[ray] & 0xFFu, params);
         // A ray that leaves the scene sees the sky. One that ran out of steps (grazing a wall, deep
         // in a corner) is a miss too, but it is still inside: it sees nothing rather than a sky
         // that a closed room would not show it.
