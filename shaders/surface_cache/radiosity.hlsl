@@ -274,7 +274,7 @@ float4 withIrradianceAt(float4 sh, float3 n, float irradiance) {
     // starts its next one at once, so that the threads of a wave, whose probes look in different
     // directions (gridOffset), each take about the sum of their 16 rays' steps rather than all
     // waiting, ray after ray, for the longest of them (on lavapipe the per-probe shift had cost
-    // half the trace again; docs/surface_cache.md).
+    // half the trace again; docs/surface_cache.md#cost-of-the-radiosity-trace).
     float3 rayDirection[LUMINA_RADIOSITY_RAYS];
     float3 rayStart[LUMINA_RADIOSITY_RAYS];
     float rayCosTheta[LUMINA_RADIOSITY_RAYS];
