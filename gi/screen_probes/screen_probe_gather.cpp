@@ -96,6 +96,7 @@ void ScreenProbeGather::uploadConstants(rhi::ICommandList& commands, const Scree
     c.maxTraceDistance = range.maxDistance;
     c.coneTanHalfAngle = std::tan(settings_.coneHalfAngle);
     c.originBias = settings_.originBiasVoxels * voxel;
+    c.slideMarginVoxels = 0.25f * settings_.originBiasVoxels;
     c.nearFieldDistance = range.nearField;
     c.probeHistoryBlend = settings_.probeHistoryBlend;
     c.outlierClamp = settings_.outlierClamp;

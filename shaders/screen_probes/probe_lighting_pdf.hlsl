@@ -26,13 +26,7 @@ groupshared float gsSolidAngle[LUMINA_SP_PROBE_TEXELS];
     const float solidAngle = texelSolidAngle(t);
 
     const float4 radiance = historyTexel(current, frame, t);
-    // The luminance cut to 4 mantissa bits (within 1/16 of itself). The APIs round last frame's
-    // radiance differently by an ULP here and there; on the full value that moved a texel's
-    // probability, the same random numbers drew other rays, and after 8 frames D3D12's rays in the
-    // emissive Cornell box parted from Vulkan's by up to 0.27 (99th percentile). Cut, an ULP almost
-    // never changes the table (0.00024). A PDF only steers samples: the estimate stays unbiased
-    // (docs/gi.md, energy 20.).
-    const float l = asfloat(asuint(luminance(radiance.rgb)) & 0xFFF80000u);
+    const float l = spLightingPdfLuminance(luminance(radiance.rgb));
     // History is sanitised when written; the check keeps a bad table from sampling nothing.
     const float mass = radiance.a > 0.0 && l > 0.0 && !isinf(l) ? l * solidAngle : 0.0;
     gsMass[t] = mass;

@@ -67,6 +67,16 @@ LUMINA_INLINE float2 spSamplePoint(uint i, uint n, uint frame, uint probe, uint 
     return float2(min(LUMINA_SP_FRAC(h.x + r.x), 0.99999994f), min(LUMINA_SP_FRAC(h.y + r.y), 0.99999994f));
 }
 
+// The luminance the lighting PDF weighs a texel by (probe_lighting_pdf.hlsl), cut to 4 mantissa
+// bits: within 1/16 of itself. The APIs round last frame's radiance differently by an ULP here and
+// there; on the full value that moved a texel's probability, the same random numbers drew other
+// rays, and after 8 frames D3D12's rays in the emissive Cornell box parted from Vulkan's by up to
+// 0.27 (99th percentile). Cut, an ULP almost never changes the table (0.00024). A PDF only steers
+// samples: the estimate stays unbiased (docs/gi.md, energy 20.).
+LUMINA_INLINE float spLightingPdfLuminance(float luminance) {
+    return asfloat(asuint(luminance) & 0xFFF80000u);
+}
+
 // Area of one texel of an n x n map in e units.
 LUMINA_INLINE float spTexelArea(uint n) {
     const float size = 2.0f / float(n);

@@ -50,9 +50,8 @@ float3 probeRayOrigin(ScreenProbe p) {
 // two_rooms read 3.5 % bright (docs/gi.md, energy 21.). Both fields start a ray here, so the far
 // field continues the line the near field covered.
 float3 probeRayStart(ScreenProbe p, float3 origin, float3 direction) {
-    const float marginVoxels = 0.25 * gSp.originBias / sdfGlobalVoxelSize(0u);
     return surfaceLineStart(origin, p.positionAndDepth.xyz, p.normal.xyz, direction,
-                            dot(direction, p.normal.xyz), marginVoxels);
+                            dot(direction, p.normal.xyz), gSp.slideMarginVoxels);
 }
 
 groupshared float3 gsRayOrigin;

@@ -96,7 +96,9 @@ struct ScreenProbeConstants {
     uint raysPerProbe;
     uint brdfRays;     // drawn from the BRDF PDF
     uint lightingRays; // drawn from the lighting PDF (raysPerProbe - brdfRays)
-    uint raysPadding;
+    // Free space a ray start keeps when it slides onto its probe's line (probeRayStart), in the
+    // finest global SDF voxels: half the origin push's clearance, a quarter of the origin bias.
+    float slideMarginVoxels;
     // The voxel lighting volume that far-field hits read.
     float3 voxelMin; // world corner
     float voxelMinPadding;

@@ -69,10 +69,7 @@ TEST_P(ProbeSamplingGpuTest, LightingPdfFollowsLastFramesRadianceAboveAFloor) {
         float massTotal = 0.0f, sum = 0.0f, lo = 1.0f, hi = 0.0f;
         for (uint32_t t = 0; t < LUMINA_SP_PROBE_TEXELS; ++t) {
             const gpu::float4 h = history[p * LUMINA_SP_PROBE_TEXELS + t];
-            // The kernel weighs the luminance cut to 4 mantissa bits (probe_lighting_pdf.hlsl), so
-            // that an ULP of rounding between the APIs does not change the table.
-            const float l =
-                std::bit_cast<float>(std::bit_cast<uint32_t>(gpu::luminance(gpu::float3(h))) & 0xFFF80000u);
+            const float l = gpu::spLightingPdfLuminance(gpu::luminance(gpu::float3(h)));
             mass[t] = h.w > 0.0f ? l * solid[t] : 0.0f;
             massTotal += mass[t];
         }
