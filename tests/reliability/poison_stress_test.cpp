@@ -56,6 +56,14 @@ constexpr uint32_t kWatchFrames = 72;
 constexpr uint32_t kRecoveryFrames = 64;
 constexpr uint32_t kRefusedWatchFrames = 2;
 
+// Whether watched frame `frame` (1 = the poisoned one) is compared with the clean run. Reading both
+// runs' histories back was the larger part of the test's time; every frame from kRecoveryFrames on
+// is compared, so the bound is checked as strictly as before, and the frames before it at the
+// powers of two and every fourth frame, for the printed recovery figures.
+bool comparedFrame(uint32_t frame) {
+    return frame <= 4 || frame % 4 == 0 || (frame & (frame - 1)) == 0 || frame >= kRecoveryFrames;
+}
+
 enum class Poison { NaN, PlusInf, Negative, Times1e6 };
 constexpr Poison kPoisons[] = {Poison::NaN, Poison::PlusInf, Poison::Negative, Poison::Times1e6};
 
@@ -402,15 +410,26 @@ protected:
                 }
                 ASSERT_FALSE(poisonedRun.nonFinite())
                     << "frame " << frame << " after the poison: " << poisonedRun.nonFinite()->describe();
+                if (!refused && !comparedFrame(frame)) {
+                    continue;
+                }
                 last = errors(technique, readState(device(), technique, clean),
                               readState(device(), technique, poisonedRun));
                 if (frame == 1) {
                     first = last;
                 }
-                hdrCurve.push_back(last[0]);
+                hdrCurve.resize(frame, std::numeric_limits<double>::quiet_NaN());
+                hdrCurve[frame - 1] = last[0];
+                // A buffer out of its bound at `frame` is counted as recovered from the next compared
+                // frame on: exact from kRecoveryFrames on, where every frame is compared, and at most
+                // 3 frames late before it.
+                uint32_t next = frame + 1;
+                while (!refused && next <= watched && !comparedFrame(next)) {
+                    ++next;
+                }
                 for (size_t c = 0; c < watch.size(); ++c) {
                     if (!(last[c] < watch[c].recoveredRelMse)) { // NaN is never recovered
-                        recoveredFrom[c] = frame + 1;
+                        recoveredFrom[c] = next;
                     }
                 }
             }
