@@ -21,13 +21,17 @@ LUMINA_GPU_NAMESPACE_BEGIN
 // CompositeConstants::flags.
 #define LUMINA_DEFERRED_FLAG_INDIRECT 1u // the composite adds indirect x albedo
 
-// Shadow biases, in shadow-map texels of world size at the receiver (docs/deferred.md): the
-// receiver is moved along its normal by the normal offset, then compared with a constant depth
-// bias. 1.5 texels of normal offset keep surfaces lit at grazing angles free of acne across the
-// 3x3 PCF footprint; the depth bias only absorbs rounding. Both widen the band next to an
-// occluder that reads as lit (a wall right under a roof), so they are kept this small.
+// Shadow biases, in shadow-map texels of world size at the receiver (docs/deferred.md, "Shadows").
+// The receiver is moved along its normal by the normal offset, then compared with a constant
+// depth bias: 1.5 texels of normal offset keep surfaces lit at grazing angles free of acne across
+// the 3x3 PCF footprint; the depth bias only absorbs rounding. Where the deferred direct light
+// knows the plane of the surface's own triangles, the sun's taps are compared with that plane
+// instead and the receiver is not moved (the offset lifted a floor point beside a wall above the
+// wall's foot, and the sun reached it through the wall); the slope bias, a tenth of the plane's
+// depth change per texel, covers planes taken across two facets of a curved mesh.
 #define LUMINA_SUN_NORMAL_OFFSET_TEXELS 1.5f
 #define LUMINA_SUN_DEPTH_BIAS_TEXELS 0.1f
+#define LUMINA_SUN_SLOPE_BIAS 0.1f
 #define LUMINA_POINT_NORMAL_OFFSET_TEXELS 1.5f
 #define LUMINA_POINT_DEPTH_BIAS_TEXELS 1.0f
 // Near plane of the cube faces as a fraction of the shadow range: geometry closer to the

@@ -26,6 +26,52 @@ LUMINA_UAV_FORMAT(rgba16f) RWTexture2D<float4> gDirect : register(u0);
 #define LUMINA_SKY_TEXTURE gSky
 #include "common/sky_sampling.hlsli"
 
+// The one of a pixel's two neighbours along `axis` (one pixel along x or y) that lies nearer the
+// plane of the pixel's shading normal, as the world-space difference towards +axis; w = 0 when
+// neither is a surface within 30 degrees of that plane (an edge, a silhouette, a feature a pixel
+// wide).
+float4 planeTangent(int2 pixel, int2 axis, float3 position, float3 normal) {
+    float4 best = float4(0.0, 0.0, 0.0, 0.0);
+    float bestOffPlane = 0.5; // sin 30 degrees
+    [unroll] for (int side = -1; side <= 1; side += 2) {
+        const int2 at = pixel + side * axis;
+        if (any(at < 0) || at.x >= int(gFrame.width) || at.y >= int(gFrame.height)) {
+            continue;
+        }
+        const float4 neighbour = gPosition.Load(int3(at, 0));
+        const float3 towards = neighbour.xyz - position;
+        const float gap = length(towards);
+        if (neighbour.w <= 0.0 || gap <= 0.0) {
+            continue;
+        }
+        const float offPlane = abs(dot(towards, normal)) / gap;
+        if (offPlane < bestOffPlane) {
+            bestOffPlane = offPlane;
+            best = float4(towards * float(side), 1.0);
+        }
+    }
+    return best;
+}
+
+// The normal of the surface's own triangles at a pixel, from the GBuffer positions of its
+// neighbours (the sun's shadow compares with that plane, shadow_visibility.hlsli); w = 0 where
+// the neighbours do not give one, or give one more than 30 degrees from the shading normal.
+float4 geometricNormal(int2 pixel, float3 position, float3 normal) {
+    const float4 alongX = planeTangent(pixel, int2(1, 0), position, normal);
+    const float4 alongY = planeTangent(pixel, int2(0, 1), position, normal);
+    if (alongX.w == 0.0 || alongY.w == 0.0) {
+        return float4(normal, 0.0);
+    }
+    const float3 perpendicular = cross(alongX.xyz, alongY.xyz);
+    const float size = length(perpendicular);
+    if (size <= 0.0) {
+        return float4(normal, 0.0);
+    }
+    float3 n = perpendicular / size;
+    n = dot(n, normal) < 0.0 ? -n : n;
+    return float4(n, dot(n, normal) >= 0.866 ? 1.0 : 0.0);
+}
+
 [numthreads(LUMINA_DEFERRED_GROUP_SIZE, LUMINA_DEFERRED_GROUP_SIZE, 1)]
 void main(uint3 id : SV_DispatchThreadID) {
     if (id.x >= gFrame.width || id.y >= gFrame.height) {
@@ -40,13 +86,18 @@ void main(uint3 id : SV_DispatchThreadID) {
     }
     const float3 position = gPosition.Load(pixel).xyz;
     const float3 albedo = gAlbedo.Load(pixel).rgb;
+    // Only the sun's map compares with the plane (4 more position loads a pixel).
+    const float4 plane =
+        gShadow.sunMapSize > 0.0 ? geometricNormal(int2(id.xy), position, normal.xyz) : float4(normal.xyz, 0.0);
     float3 irradiance = float3(0.0, 0.0, 0.0);
     for (uint i = 0; i < gFrame.lightCount; ++i) {
         const DeferredLight light = gLights[i];
         const LightSample sample = evaluateLight(light.light, position);
         const float cosine = dot(normal.xyz, sample.direction);
         if (cosine > 0.0 && any(sample.irradiance > 0.0)) {
-            irradiance += sample.irradiance * (cosine * shadowVisibility(light, position, normal.xyz));
+            const float visibility =
+                shadowVisibilityOnPlane(light, position, normal.xyz, plane.xyz, plane.w > 0.0);
+            irradiance += sample.irradiance * (cosine * visibility);
         }
     }
     const float3 radiance = gMaterial.Load(pixel).rgb + albedo * LUMINA_INV_PI * irradiance;

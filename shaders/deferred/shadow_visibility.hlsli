@@ -29,7 +29,17 @@ float loadShadow(int layer, int2 texel) {
 // weights (tap k at offset k - 1 spreads over texels k and k + 1): 1 - f, 1, 1, f for the
 // columns base - 1 .. base + 2, summing to 3 per axis. Taps past the map's (or the cube face's)
 // edge clamp to it rather than wrapping onto the next face.
-float pcf3x3(int layer, float2 uv, float size, float receiver) {
+//
+// A texel where nothing was drawn (still at the clear value, 1: "as far as the map reaches")
+// lies past the edge of every surface, the receiver's included, so it says nothing about the
+// receiver's shadow and is left out of the average. Counted as lit, it let the sun through a
+// zero-thickness wall at its foot: a floor point beside the wall has the wall on one side of its
+// footprint and, beyond the wall's outside face, the empty texels of rays that miss everything.
+//
+// receiverSlope is the receiver's depth change per texel step along the map's x and y (zero
+// for a receiver compared at one depth): each texel is then compared with the receiver's plane
+// at that texel's centre.
+float pcf3x3(int layer, float2 uv, float size, float receiver, float2 receiverSlope) {
     const int last = int(size) - 1;
     const float2 texel = uv * size - 0.5;
     const float2 base = floor(texel);
@@ -37,26 +47,57 @@ float pcf3x3(int layer, float2 uv, float size, float receiver) {
     const float4 wx = float4(1.0 - f.x, 1.0, 1.0, f.x);
     const float4 wy = float4(1.0 - f.y, 1.0, 1.0, f.y);
     float lit = 0.0;
+    float counted = 0.0;
     [unroll] for (int j = 0; j < 4; ++j) {
         [unroll] for (int i = 0; i < 4; ++i) {
-            const int2 at = clamp(int2(base) + int2(i - 1, j - 1), int2(0, 0), int2(last, last));
-            lit += (receiver <= loadShadow(layer, at) ? 1.0 : 0.0) * wx[i] * wy[j];
+            const int2 offset = int2(i - 1, j - 1);
+            const int2 at = clamp(int2(base) + offset, int2(0, 0), int2(last, last));
+            const float stored = loadShadow(layer, at);
+            const float weight = stored < 1.0 ? wx[i] * wy[j] : 0.0;
+            const float plane = receiver + dot(receiverSlope, base + float2(offset) - texel);
+            lit += plane <= stored ? weight : 0.0;
+            counted += weight;
         }
     }
-    return lit / 9.0;
+    // Every tap empty: a receiver thinner than a texel, which nothing drawn can shadow.
+    return counted > 0.0 ? lit / counted : 1.0;
 }
 
-float sunVisibility(float3 position, float3 normal) {
+// The sun map's depth change per texel step along its x and y over a plane of normal
+// planeNormal. The map is orthographic: rows 0 and 1 of sunViewProjRows are its right and up axes
+// over half its extent, row 2 the sun's direction over the depth range. One texel along x moves
+// texelWorld along right (along y: down); staying on the plane then moves -n.step / n.sun along
+// the sun. A plane lit at grazing angles would be extrapolated many texels deep, so its slope is
+// taken at no more than 80 degrees from the sun, where its light is small anyway.
+float2 sunReceiverSlope(float3 planeNormal, float texelWorld) {
+    const float3 right = normalize(LUMINA_SHADOW_CONSTANTS.sunViewProjRows[0].xyz);
+    const float3 up = normalize(LUMINA_SHADOW_CONSTANTS.sunViewProjRows[1].xyz);
+    const float3 sun = normalize(LUMINA_SHADOW_CONSTANTS.sunViewProjRows[2].xyz);
+    const float facing = min(dot(planeNormal, sun), -0.17);
+    const float2 across = float2(dot(planeNormal, right), -dot(planeNormal, up));
+    return -across * texelWorld / (facing * LUMINA_SHADOW_CONSTANTS.sunDepthRange);
+}
+
+// The sun's visibility at a surface point. Given the plane of the surface's own geometry
+// (hasPlane: planeNormal is the normal of the triangles around the point, not an interpolated
+// shading normal, which on a curved mesh differs from its facets enough to shadow them) the taps
+// are compared with that plane and the point is not moved. Without it the point is moved along
+// its normal by the normal offset, which keeps surfaces lit at grazing angles free of acne but
+// lifts a floor point beside a wall above the wall's foot.
+float sunVisibility(float3 position, float3 normal, float3 planeNormal, bool hasPlane) {
     const float texelWorld = LUMINA_SHADOW_CONSTANTS.sunTexelWorld;
-    const float4 p = float4(position + normal * (LUMINA_SUN_NORMAL_OFFSET_TEXELS * texelWorld), 1.0);
+    const float offset = hasPlane ? 0.0 : LUMINA_SUN_NORMAL_OFFSET_TEXELS * texelWorld;
+    const float4 p = float4(position + normal * offset, 1.0);
     const float3 clip = float3(dot(LUMINA_SHADOW_CONSTANTS.sunViewProjRows[0], p), dot(LUMINA_SHADOW_CONSTANTS.sunViewProjRows[1], p),
                                dot(LUMINA_SHADOW_CONSTANTS.sunViewProjRows[2], p));
     const float2 uv = float2(0.5 + 0.5 * clip.x, 0.5 - 0.5 * clip.y);
     if (any(uv < 0.0) || any(uv > 1.0) || clip.z > 1.0) {
         return 1.0; // outside the fitted map: nothing there casts a shadow
     }
-    const float receiver = clip.z - LUMINA_SUN_DEPTH_BIAS_TEXELS * texelWorld / LUMINA_SHADOW_CONSTANTS.sunDepthRange;
-    return pcf3x3(-1, uv, LUMINA_SHADOW_CONSTANTS.sunMapSize, receiver);
+    const float2 slope = hasPlane ? sunReceiverSlope(planeNormal, texelWorld) : float2(0.0, 0.0);
+    const float depthBias = LUMINA_SUN_DEPTH_BIAS_TEXELS * texelWorld / LUMINA_SHADOW_CONSTANTS.sunDepthRange;
+    const float receiver = clip.z - depthBias - LUMINA_SUN_SLOPE_BIAS * length(slope);
+    return pcf3x3(-1, uv, LUMINA_SHADOW_CONSTANTS.sunMapSize, receiver, slope);
 }
 
 float pointVisibility(uint cube, float3 position, float3 normal) {
@@ -70,18 +111,28 @@ float pointVisibility(uint cube, float3 position, float3 normal) {
     }
     const uint face = cubeFaceOf(offset);
     const int layer = int(cube * LUMINA_CUBE_FACE_COUNT + face);
-    return pcf3x3(layer, cubeFaceUv(offset, face), LUMINA_SHADOW_CONSTANTS.pointFaceSize, receiver);
+    const float2 flat = float2(0.0, 0.0); // the cube faces are not affine: no receiver plane
+    return pcf3x3(layer, cubeFaceUv(offset, face), LUMINA_SHADOW_CONSTANTS.pointFaceSize, receiver, flat);
 }
 
-float shadowVisibility(DeferredLight light, float3 position, float3 normal) {
+// planeNormal / hasPlane: the plane of the surface's own triangles where the caller knows it
+// (the deferred direct light, from the GBuffer's positions); the sun's map then needs no normal
+// offset (sunVisibility).
+float shadowVisibilityOnPlane(DeferredLight light, float3 position, float3 normal, float3 planeNormal,
+                              bool hasPlane) {
     const uint slot = light.shadowSlot;
     if (slot == LUMINA_SHADOW_SLOT_NONE) {
         return 1.0;
     }
     if (lightType(light.light) == LUMINA_LIGHT_DIRECTIONAL) {
-        return LUMINA_SHADOW_CONSTANTS.sunMapSize > 0.0 ? sunVisibility(position, normal) : 1.0;
+        const bool hasMap = LUMINA_SHADOW_CONSTANTS.sunMapSize > 0.0;
+        return hasMap ? sunVisibility(position, normal, planeNormal, hasPlane) : 1.0;
     }
     return slot < LUMINA_SHADOW_CONSTANTS.shadowedPointCount ? pointVisibility(slot, position, normal) : 1.0;
+}
+
+float shadowVisibility(DeferredLight light, float3 position, float3 normal) {
+    return shadowVisibilityOnPlane(light, position, normal, normal, false);
 }
 
 #endif
