@@ -1,7 +1,8 @@
 // The deferred renderer on the GPU (lavapipe in CI), validation and synchronization
-// validation on: GBuffer contents, direct light against the shared light model, shadow-pass
-// skipping, the shadow budget, emission, culling of mirrored and double-sided instances, the
-// cube-map convention of the point shadows, the composite and the buffer dump.
+// validation on: GBuffer contents, direct light against the shared light model, the sun's shadow
+// at the foot of a wall, shadow-pass skipping, the shadow budget, emission, culling of mirrored
+// and double-sided instances, the cube-map convention of the point shadows, the composite and
+// the buffer dump.
 #include "gi/image/display.h"
 #include "gi/image/exr.h"
 #include "gi/scene/mesh_builder.h"
@@ -143,6 +144,62 @@ TEST_P(DeferredGpuTest, SunShadowRendersOnlyWhenTheSunMoves) {
     harness.renderer().setLights(lights);
     EXPECT_TRUE(harness.render().ran("sun shadow"));
     EXPECT_EQ(harness.render().skipReason("sun shadow"), "unchanged since frame 2");
+}
+
+// A zero-thickness wall standing on the edge of a floor, the sun behind it: the floor is in the
+// wall's shadow right up to the wall's foot. Two things used to light a strip of it a shadow
+// texel or two wide (docs/deferred.md, "Shadows"): the PCF counted as lit the texels beyond the
+// wall, where nothing was drawn, and the normal offset lifted the receiver above the wall's foot.
+// A coarse map (64 texels, 3.5 cm) makes that strip several pixels wide.
+TEST_P(DeferredGpuTest, TheSunDoesNotReachAFloorThroughTheFootOfAWall) {
+    scene::Scene scene;
+    scene.name = "wall_on_floor";
+    scene.materials = {{.name = "grey", .baseColor = {0.5f, 0.5f, 0.5f, 1.0f}, .doubleSided = true}};
+    scene::MeshBuilder floor("floor");
+    floor.quad({-1, 0, 0}, {-1, 0, 2}, {1, 0, 2}, {1, 0, 0}); // front +y; nothing lies beyond z = 0
+    scene::MeshBuilder wall("wall");
+    wall.quad({-1, 0, 0}, {1, 0, 0}, {1, 1, 0}, {-1, 1, 0});
+    scene.meshes = {floor.finish(), wall.finish()};
+    scene.instances = {{.mesh = 0, .transform = glm::mat4(1.0f), .name = "floor"},
+                       {.mesh = 1, .transform = glm::mat4(1.0f), .name = "wall"}};
+    // Travelling +z and down two to one: the 1 m wall shades the floor up to z = 0.5.
+    scene.lights.push_back({.type = scene::LightType::Directional,
+                            .name = "sun",
+                            .direction = glm::normalize(glm::vec3(0.0f, -1.0f, 0.5f))});
+    scene.camera = {.name = "camera",
+                    .position = {0, 3, 0.5f},
+                    .forward = {0, -1, 0},
+                    .up = {0, 0, -1},
+                    .fovY = 0.4f,
+                    .nearPlane = 0.1f,
+                    .farPlane = 100.0f};
+    scene.image = {kSize, kSize};
+
+    DeferredHarness harness(device(), shaders(), scene, kSize, kSize, nullptr, 64);
+    harness.render();
+    const GBufferImages gbuffer = harness.readGBuffer();
+    const image::Image direct = harness.read(harness.renderer().direct());
+    uint32_t shaded = 0, lit = 0;
+    for (uint32_t y = 0; y < kSize; ++y) {
+        for (uint32_t x = 0; x < kSize; ++x) {
+            const gpu::float3 p = rgbAt(gbuffer.position, x, y);
+            if (gbuffer.normal.at("A", x, y) == 0.0f || p.y > 1e-3f) {
+                continue; // not the floor
+            }
+            const float reflected = unshadowed(harness.renderer().lights(), gbuffer, x, y).reflected.x;
+            ASSERT_GT(reflected, 0.0f) << x << "," << y;
+            const float visibility = direct.at("R", x, y) / reflected;
+            if (p.z < 0.45f) { // in the wall's shadow, the PCF's blur (two texels) away from its edge
+                EXPECT_LT(visibility, 1e-3f) << "floor at z = " << p.z << " (pixel " << x << "," << y << ")";
+                ++shaded;
+            } else if (p.z > 0.6f) {
+                EXPECT_GT(visibility, 0.999f) << "floor at z = " << p.z << " (pixel " << x << "," << y << ")";
+                ++lit;
+            }
+        }
+    }
+    EXPECT_GT(shaded, kSize * 10u) << "the view shows the shaded strip";
+    EXPECT_GT(lit, kSize * 10u) << "and the lit floor beyond it";
 }
 
 TEST_P(DeferredGpuTest, LightsBeyondTheShadowBudgetLightUnshadowedAndSaySo) {

@@ -50,12 +50,13 @@ class DeferredHarness {
 public:
     // The GpuScene is made here unless one is given (e.g. the path tracer's).
     DeferredHarness(rhi::IDevice& device, rhi::ShaderLibrary& shaders, scene::Scene scene, uint32_t width,
-                    uint32_t height, const gi::GpuScene* gpuScene = nullptr)
+                    uint32_t height, const gi::GpuScene* gpuScene = nullptr, uint32_t sunShadowSize = 2048)
         : device_(device), scene_(std::move(scene)), pipelines_(device, shaders),
           ownScene_(gpuScene ? nullptr : std::make_unique<gi::GpuScene>(device, scene_)),
           renderer_(device, scene_, gpuScene ? *gpuScene : *ownScene_,
                     {.width = width,
                      .height = height,
+                     .sunShadowSize = sunShadowSize,
                      .log = [this](std::string_view line) { log_.emplace_back(line); }}),
           list_(device.createCommandList()) {}
 
