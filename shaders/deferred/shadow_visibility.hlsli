@@ -67,8 +67,8 @@ float pcf3x3(int layer, float2 uv, float size, float receiver, float2 receiverSl
 // planeNormal. The map is orthographic: rows 0 and 1 of sunViewProjRows are its right and up axes
 // over half its extent, row 2 the sun's direction over the depth range. One texel along x moves
 // texelWorld along right (along y: down); staying on the plane then moves -n.step / n.sun along
-// the sun. A plane lit at grazing angles would be extrapolated many texels deep, so its slope is
-// taken at no more than 80 degrees from the sun, where its light is small anyway.
+// the sun. sunVisibility uses it only for planes within LUMINA_SUN_PLANE_MIN_COSINE of the sun;
+// the clamp keeps the division finite whatever the caller.
 float2 sunReceiverSlope(float3 planeNormal, float texelWorld) {
     const float3 right = normalize(LUMINA_SHADOW_CONSTANTS.sunViewProjRows[0].xyz);
     const float3 up = normalize(LUMINA_SHADOW_CONSTANTS.sunViewProjRows[1].xyz);
@@ -81,12 +81,15 @@ float2 sunReceiverSlope(float3 planeNormal, float texelWorld) {
 // The sun's visibility at a surface point. Given the plane of the surface's own geometry
 // (hasPlane: planeNormal is the normal of the triangles around the point, not an interpolated
 // shading normal, which on a curved mesh differs from its facets enough to shadow them) the taps
-// are compared with that plane and the point is not moved. Without it the point is moved along
-// its normal by the normal offset, which keeps surfaces lit at grazing angles free of acne but
-// lifts a floor point beside a wall above the wall's foot.
+// are compared with that plane and the point is not moved. Without it, or for a plane lit at a
+// grazing angle (over 70 degrees from the sun, where a small error in the plane is many texels of
+// depth), the point is moved along its normal by the normal offset, which keeps such surfaces
+// free of acne but lifts a floor point beside a wall above the wall's foot.
 float sunVisibility(float3 position, float3 normal, float3 planeNormal, bool hasPlane) {
     const float texelWorld = LUMINA_SHADOW_CONSTANTS.sunTexelWorld;
-    const float offset = hasPlane ? 0.0 : LUMINA_SUN_NORMAL_OFFSET_TEXELS * texelWorld;
+    const float3 sun = normalize(LUMINA_SHADOW_CONSTANTS.sunViewProjRows[2].xyz);
+    const bool onPlane = hasPlane && dot(planeNormal, sun) <= -LUMINA_SUN_PLANE_MIN_COSINE;
+    const float offset = onPlane ? 0.0 : LUMINA_SUN_NORMAL_OFFSET_TEXELS * texelWorld;
     const float4 p = float4(position + normal * offset, 1.0);
     const float3 clip = float3(dot(LUMINA_SHADOW_CONSTANTS.sunViewProjRows[0], p), dot(LUMINA_SHADOW_CONSTANTS.sunViewProjRows[1], p),
                                dot(LUMINA_SHADOW_CONSTANTS.sunViewProjRows[2], p));
@@ -94,7 +97,7 @@ float sunVisibility(float3 position, float3 normal, float3 planeNormal, bool has
     if (any(uv < 0.0) || any(uv > 1.0) || clip.z > 1.0) {
         return 1.0; // outside the fitted map: nothing there casts a shadow
     }
-    const float2 slope = hasPlane ? sunReceiverSlope(planeNormal, texelWorld) : float2(0.0, 0.0);
+    const float2 slope = onPlane ? sunReceiverSlope(planeNormal, texelWorld) : float2(0.0, 0.0);
     const float depthBias = LUMINA_SUN_DEPTH_BIAS_TEXELS * texelWorld / LUMINA_SHADOW_CONSTANTS.sunDepthRange;
     const float receiver = clip.z - depthBias - LUMINA_SUN_SLOPE_BIAS * length(slope);
     return pcf3x3(-1, uv, LUMINA_SHADOW_CONSTANTS.sunMapSize, receiver, slope);

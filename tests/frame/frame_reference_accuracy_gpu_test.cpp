@@ -65,7 +65,7 @@ const SceneGoal kSceneGoals[] = {
     {.scene = "cornell_box", .relMseFraction = 0.065, .meanTolerance = 0.03},
     // 0.038, 1.014 (0.034, 1.006 before energy 22.).
     {.scene = "cornell_box_point", .relMseFraction = 0.05, .meanTolerance = 0.03},
-    // 0.049, 0.961 since the sun's shadow stopped leaking at the foot of a wall (docs/deferred.md,
+    // 0.055, 0.960 since the sun's shadow stopped leaking at the foot of a wall (docs/deferred.md,
     // "Shadows"); 0.069, 0.962 before (0.072, 0.959 before energy 22.). The mean's goal not met
     // since rays no longer read faces that face along them (docs/gi.md, energy 10.): 1.014
     // before, where rays passing the opening's rim read the sunlit outside and made up for the sky
@@ -80,11 +80,13 @@ const SceneGoal kSceneGoals[] = {
     // 0.68 five floor pixels the sun lit through the wall. The 4,096-spp reference's own noise is
     // large here (the sun patch is found by few paths): the H200's 65,536-spp one gives 0.015.
     {.scene = "sunlit_rooms", .relMseFraction = 0.25, .meanTolerance = 0.05},
-    // 0.613, 1.074 (direct-only's error is 0.434 at high, with its finer shadow map): the high
+    // 0.219, 1.042 since the sun's shadow stopped leaking at the foot of a wall (direct-only's
+    // 0.224; FramePresetsGpu now finds high less accurate than medium, 0.0492 against 0.0440).
+    // Before: 0.613, 1.074 (direct-only's error 0.434 at high, with its finer shadow map): the high
     // preset's 9 cm radiosity blocks under the zero-thickness ceiling hold no texel with clearance,
     // and their probes were pushed up through it to read the sky and the sunlit roof (0.662,
     // 1.185; docs/gi.md, energy 18.).
-    {.scene = "sunlit_rooms", .relMseFraction = 0.64, .meanTolerance = 0.1, .preset = "high"},
+    {.scene = "sunlit_rooms", .relMseFraction = 0.3, .meanTolerance = 0.1, .preset = "high"},
 };
 
 INSTANTIATE_TEST_SUITE_P(Scenes, FrameVsStoredReferenceGpu,
