@@ -67,13 +67,11 @@ float pcf3x3(int layer, float2 uv, float size, float receiver, float2 receiverSl
 // planeNormal. The map is orthographic: rows 0 and 1 of sunViewProjRows are its right and up axes
 // over half its extent, row 2 the sun's direction over the depth range. One texel along x moves
 // texelWorld along right (along y: down); staying on the plane then moves -n.step / n.sun along
-// the sun. sunVisibility uses it only for planes within LUMINA_SUN_PLANE_MIN_COSINE of the sun;
-// the clamp keeps the division finite whatever the caller.
-float2 sunReceiverSlope(float3 planeNormal, float texelWorld) {
+// the sun. Called only for planes within LUMINA_SUN_PLANE_MIN_COSINE of the sun (sunVisibility),
+// so facing = n.sun is at most -0.34 and the division stays small.
+float2 sunReceiverSlope(float3 planeNormal, float facing, float texelWorld) {
     const float3 right = normalize(LUMINA_SHADOW_CONSTANTS.sunViewProjRows[0].xyz);
     const float3 up = normalize(LUMINA_SHADOW_CONSTANTS.sunViewProjRows[1].xyz);
-    const float3 sun = normalize(LUMINA_SHADOW_CONSTANTS.sunViewProjRows[2].xyz);
-    const float facing = min(dot(planeNormal, sun), -0.17);
     const float2 across = float2(dot(planeNormal, right), -dot(planeNormal, up));
     return -across * texelWorld / (facing * LUMINA_SHADOW_CONSTANTS.sunDepthRange);
 }
@@ -88,7 +86,8 @@ float2 sunReceiverSlope(float3 planeNormal, float texelWorld) {
 float sunVisibility(float3 position, float3 normal, float3 planeNormal, bool hasPlane) {
     const float texelWorld = LUMINA_SHADOW_CONSTANTS.sunTexelWorld;
     const float3 sun = normalize(LUMINA_SHADOW_CONSTANTS.sunViewProjRows[2].xyz);
-    const bool onPlane = hasPlane && dot(planeNormal, sun) <= -LUMINA_SUN_PLANE_MIN_COSINE;
+    const float facing = dot(planeNormal, sun);
+    const bool onPlane = hasPlane && facing <= -LUMINA_SUN_PLANE_MIN_COSINE;
     const float offset = onPlane ? 0.0 : LUMINA_SUN_NORMAL_OFFSET_TEXELS * texelWorld;
     const float4 p = float4(position + normal * offset, 1.0);
     const float3 clip = float3(dot(LUMINA_SHADOW_CONSTANTS.sunViewProjRows[0], p), dot(LUMINA_SHADOW_CONSTANTS.sunViewProjRows[1], p),
@@ -97,7 +96,7 @@ float sunVisibility(float3 position, float3 normal, float3 planeNormal, bool has
     if (any(uv < 0.0) || any(uv > 1.0) || clip.z > 1.0) {
         return 1.0; // outside the fitted map: nothing there casts a shadow
     }
-    const float2 slope = onPlane ? sunReceiverSlope(planeNormal, texelWorld) : float2(0.0, 0.0);
+    const float2 slope = onPlane ? sunReceiverSlope(planeNormal, facing, texelWorld) : float2(0.0, 0.0);
     const float depthBias = LUMINA_SUN_DEPTH_BIAS_TEXELS * texelWorld / LUMINA_SHADOW_CONSTANTS.sunDepthRange;
     const float receiver = clip.z - depthBias - LUMINA_SUN_SLOPE_BIAS * length(slope);
     return pcf3x3(-1, uv, LUMINA_SHADOW_CONSTANTS.sunMapSize, receiver, slope);
