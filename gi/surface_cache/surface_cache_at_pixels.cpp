@@ -28,10 +28,12 @@ CacheAtPixels cacheAtPixels(const image::Image& position, const image::Image& no
             }
             const gpu::SurfaceCard& card = cards[owner.card];
             const glm::vec2 texel = gpu::cardToAtlasTexel(card, glm::vec2(gpu::worldToCardSpace(card, p)));
-            const uint32_t tx =
-                std::min(uint32_t(std::max(texel.x, 0.0f)), card.atlasRect.x + card.atlasRect.z - 1);
-            const uint32_t ty =
-                std::min(uint32_t(std::max(texel.y, 0.0f)), card.atlasRect.y + card.atlasRect.w - 1);
+            // Clamped into the card's own rectangle on both sides, as cardRadiance does: a point in
+            // the card's padding reads the card's edge, never the atlas neighbour's texels.
+            const uint32_t tx = std::clamp(uint32_t(std::max(texel.x, 0.0f)), card.atlasRect.x,
+                                           card.atlasRect.x + card.atlasRect.z - 1);
+            const uint32_t ty = std::clamp(uint32_t(std::max(texel.y, 0.0f)), card.atlasRect.y,
+                                           card.atlasRect.y + card.atlasRect.w - 1);
             const glm::vec4 lighting = finalLighting[size_t(ty) * atlasSize + tx];
             out.radiance.setRgb(x, y, {lighting.r, lighting.g, lighting.b});
             out.radiance.set("A", x, y, 1.0f);
