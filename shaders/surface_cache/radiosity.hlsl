@@ -62,6 +62,26 @@ uint probesPerRow() {
     return gConstants.atlasSize / LUMINA_RADIOSITY_PROBE_SPACING;
 }
 
+// Candidate texels for a probe: slots 0-15 are its own block's (kProbeTexelOrder), slots 16-143
+// the eight neighbouring blocks' (edges first, then corners: a block in the corner of a wall, the
+// ceiling and a divider finds clearance only diagonally), 16 each in the same order. A neighbour's
+// texel is taken only where no visible texel of the block has the clearance its rays need: a block
+// narrower than the clearance along a concave junction (the floor's first row at a wall's foot once
+// card texels are finer than an eighth of a global SDF voxel, the high preset) otherwise started
+// its rays inside the wall's shell, every ray hit at once and read the voxel of the wall's far side
+// (sunlit_rooms: 85 times the light of the next row; docs/gi.md, energy 23.).
+#define LUMINA_RADIOSITY_PROBE_SLOTS 144u
+static const int2 kNeighbourBlock[9] = {int2(0, 0),   int2(-1, 0), int2(1, 0),  int2(0, -1), int2(0, 1),
+                                        int2(-1, -1), int2(1, -1), int2(-1, 1), int2(1, 1)};
+
+// The atlas texel of `slot` of `probe`; false where that texel lies outside the atlas.
+bool probeSlotTexel(uint2 probe, uint slot, out uint2 texel) {
+    int2 block = int2(probe) + kNeighbourBlock[slot / 16u];
+    int2 t = block * int(LUMINA_RADIOSITY_PROBE_SPACING) + int2(kProbeTexelOrder[slot % 16u]);
+    texel = uint2(max(t, int2(0, 0)));
+    return all(t >= int2(0, 0)) && all(t < int2(gConstants.atlasSize, gConstants.atlasSize));
+}
+
 // The probe (in the atlas's probe grid) of a per-probe tile-list dispatch's thread; false past
 // the list.
 bool listedProbe(uint2 id, out uint2 probe) {
@@ -217,8 +237,46 @@ float4 withIrradianceAt(float4 sh, float3 n, float irradiance) {
     return sh;
 }
 
+// The texel a probe's rays start from, as chosen so far (trace).
+struct ProbeTexelChoice {
+    uint2 texel;
+    uint slot;
+    uint card;
+    float3 n;
+    float3 world;
+    float clearance; // the lifted origin's SDF less the clearance it needs
+};
+
+// Takes `slot` of `probe` in place of the choice so far if it is captured and clearer by the tie
+// margin (the first captured one always). `sameCard`: LUMINA_NO_CARD for the block's own texels,
+// else the card a neighbour block's texel must belong to.
+void considerProbeSlot(uint2 probe, uint slot, uint sameCard, inout ProbeTexelChoice choice) {
+    uint2 candidate;
+    bool inAtlas = probeSlotTexel(probe, slot, candidate);
+    float4 normal = gSurface.Load(int4(candidate, 0, 0));
+    uint candidateCard = atlasTexelCard(candidate);
+    if (!inAtlas || normal.a == 0.0f || candidateCard == LUMINA_NO_CARD ||
+        (sameCard != LUMINA_NO_CARD && candidateCard != sameCard)) {
+        return;
+    }
+    float3 candidateNormal = normalize(normal.xyz);
+    float3 candidateWorld = atlasTexelWorldPosition(gCards[candidateCard], candidate);
+    float3 lifted = liftedOrigin(candidateWorld, candidateNormal);
+    float needed = originClearance(lifted);
+    float clearance = sdfSampleGlobal(lifted) - needed;
+    if (choice.card == LUMINA_NO_CARD ||
+        clearance > choice.clearance + LUMINA_RADIOSITY_CLEARANCE_TIE * needed) {
+        choice.texel = candidate;
+        choice.slot = slot;
+        choice.card = candidateCard;
+        choice.n = candidateNormal;
+        choice.world = candidateWorld;
+        choice.clearance = clearance;
+    }
+}
+
 [numthreads(LUMINA_LINEAR_GROUP_SIZE, 1, 1)] void trace(uint3 id
-                                  : SV_DispatchThreadID) {
+                                                        : SV_DispatchThreadID) {
     uint2 probe;
     if (!listedProbe(id.xy, probe)) {
         return;
@@ -227,33 +285,26 @@ float4 withIrradianceAt(float4 sh, float3 n, float irradiance) {
     // need (a block straddling the edge of an object standing on the surface must not start its
     // rays inside that object, nor a block in a corner on the other wall's zero crossing); the
     // clearest captured one when none does.
-    uint2 texel = uint2(0, 0);
-    uint slot = 0u;
-    uint card = LUMINA_NO_CARD;
-    float3 n = float3(0.0f, 0.0f, 1.0f);
-    float3 world = float3(0.0f, 0.0f, 0.0f);
-    float bestClearance = -1e30f;
-    for (uint i = 0u; i < 16u && bestClearance < 0.0f; ++i) {
-        uint2 candidate = probe * LUMINA_RADIOSITY_PROBE_SPACING + kProbeTexelOrder[i];
-        float4 normal = gSurface.Load(int4(candidate, 0, 0));
-        uint candidateCard = atlasTexelCard(candidate);
-        if (normal.a == 0.0f || candidateCard == LUMINA_NO_CARD) {
-            continue;
-        }
-        float3 candidateNormal = normalize(normal.xyz);
-        float3 candidateWorld = atlasTexelWorldPosition(gCards[candidateCard], candidate);
-        float3 lifted = liftedOrigin(candidateWorld, candidateNormal);
-        float needed = originClearance(lifted);
-        float clearance = sdfSampleGlobal(lifted) - needed;
-        if (card == LUMINA_NO_CARD || clearance > bestClearance + LUMINA_RADIOSITY_CLEARANCE_TIE * needed) {
-            texel = candidate;
-            slot = i;
-            card = candidateCard;
-            n = candidateNormal;
-            world = candidateWorld;
-            bestClearance = clearance;
-        }
+    ProbeTexelChoice choice;
+    choice.texel = uint2(0, 0);
+    choice.slot = 0u;
+    choice.card = LUMINA_NO_CARD;
+    choice.n = float3(0.0f, 0.0f, 1.0f);
+    choice.world = float3(0.0f, 0.0f, 0.0f);
+    choice.clearance = -1e30f;
+    for (uint i = 0u; i < 16u && choice.clearance < 0.0f; ++i) {
+        considerProbeSlot(probe, i, LUMINA_NO_CARD, choice);
     }
+    // Only a visible texel short of clearance looks further: an empty or buried block keeps no light.
+    bool lookAround =
+        choice.card != LUMINA_NO_CARD && choice.clearance < 0.0f && !atlasTexelBuried(choice.world, choice.n);
+    for (uint j = 16u; j < LUMINA_RADIOSITY_PROBE_SLOTS && lookAround && choice.clearance < 0.0f; ++j) {
+        considerProbeSlot(probe, j, choice.card, choice);
+    }
+    uint card = choice.card;
+    uint slot = choice.slot;
+    float3 n = choice.n;
+    float3 world = choice.world;
     if (card == LUMINA_NO_CARD || atlasTexelBuried(world, n)) {
         gProbesOut[probeIndex(probe)] = emptyProbe(); // its texels get no indirect light
         return;
@@ -379,10 +430,11 @@ float4 withIrradianceAt(float4 sh, float3 n, float irradiance) {
     gProbesOut[probeIndex(probe)] = result;
 }
 
-// Where a traced probe's rays started: its texel (kProbeTexelOrder[w - 1] of its block) lifted
-// off the surface as the trace lifts it. Recomputed, not stored: the gradient's push is the same.
+// Where a traced probe's rays started: its texel (slot w - 1, probeSlotTexel) lifted off the
+// surface as the trace lifts it. Recomputed, not stored: the gradient's push is the same.
 float3 probeRayOrigin(uint2 probe, RadiosityProbe traced) {
-    uint2 texel = probe * LUMINA_RADIOSITY_PROBE_SPACING + kProbeTexelOrder[uint(traced.normalAndTexel.w) - 1u];
+    uint2 texel;
+    probeSlotTexel(probe, uint(traced.normalAndTexel.w) - 1u, texel);
     uint card = atlasTexelCard(texel);
     return probeRayOriginAt(atlasTexelWorldPosition(gCards[card], texel), traced.normalAndTexel.xyz, card);
 }

@@ -162,7 +162,7 @@ struct RadiosityProbe {
     float4 g;
     float4 b;
     float4 normalAndTexel; // xyz: unit world normal of the probe's texel; w: 0 where no surface, else 1 + the
-                           // index of that texel in its block's kProbeTexelOrder (radiosity.hlsl)
+                           // texel's slot (probeSlotTexel in radiosity.hlsl: its block's or a neighbour's)
 };
 LUMINA_STATIC_ASSERT_SIZE(RadiosityProbe, 64);
 
