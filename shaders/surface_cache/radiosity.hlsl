@@ -239,8 +239,7 @@ float4 withIrradianceAt(float4 sh, float3 n, float irradiance) {
 
 // The texel a probe's rays start from, as chosen so far (trace).
 struct ProbeTexelChoice {
-    uint2 texel;
-    uint slot;
+    uint slot; // probeSlotTexel finds the texel again
     uint card;
     float3 n;
     float3 world;
@@ -266,7 +265,6 @@ void considerProbeSlot(uint2 probe, uint slot, uint sameCard, inout ProbeTexelCh
     float clearance = sdfSampleGlobal(lifted) - needed;
     if (choice.card == LUMINA_NO_CARD ||
         clearance > choice.clearance + LUMINA_RADIOSITY_CLEARANCE_TIE * needed) {
-        choice.texel = candidate;
         choice.slot = slot;
         choice.card = candidateCard;
         choice.n = candidateNormal;
@@ -286,7 +284,6 @@ void considerProbeSlot(uint2 probe, uint slot, uint sameCard, inout ProbeTexelCh
     // rays inside that object, nor a block in a corner on the other wall's zero crossing); the
     // clearest captured one when none does.
     ProbeTexelChoice choice;
-    choice.texel = uint2(0, 0);
     choice.slot = 0u;
     choice.card = LUMINA_NO_CARD;
     choice.n = float3(0.0f, 0.0f, 1.0f);
