@@ -94,6 +94,11 @@ float texelSolidAngle(uint t) {
     return hemiOctTexelSolidAngle(t % LUMINA_SP_OCT_SIZE, t / LUMINA_SP_OCT_SIZE, LUMINA_SP_OCT_SIZE);
 }
 
+// Texel t's share of the cosine-weighted hemisphere, (1 / pi) times the integral of cos over it.
+float texelCosineMass(uint t) {
+    return hemiOctTexelCosineMass(t % LUMINA_SP_OCT_SIZE, t / LUMINA_SP_OCT_SIZE, LUMINA_SP_OCT_SIZE);
+}
+
 // World direction of the centre of texel t of a probe's map.
 float3 texelDirection(ProbeFrame f, uint t) {
     const float2 e = octTexelCentre(t % LUMINA_SP_OCT_SIZE, t / LUMINA_SP_OCT_SIZE, LUMINA_SP_OCT_SIZE);
