@@ -6,24 +6,15 @@ namespace lumina::gi {
 
 void ScreenGatherPass::record(FrameContext& frame, const ScreenProbeView& view) const {
     const ScreenProbeResources& r = view.resources;
-    const SurfaceCacheView* cache = view.surfaceCache;
-    auto pass = frame.compute(kName, cache ? "screen_probes/screen_gather.withSurfaceCache"
-                                           : "screen_probes/screen_gather");
-    pass.constantBuffer(1, r.constants)
+    frame.compute(kName, "screen_probes/screen_gather")
+        .constantBuffer(1, r.constants)
         .read(0, view.gbuffer.normal)
         .read(1, view.gbuffer.position)
         .read(2, r.probes[view.current])
         .read(3, r.irradiance)
         .sampler(0, r.linearClamp)
-        .write(0, r.gather);
-    if (cache) {
-        // A pixel no probe's surface matches reads the cache's indirect irradiance there.
-        pass.read(8, cache->cardBvh)
-            .read(9, cache->cards)
-            .read(10, cache->finalLighting)
-            .read(11, cache->indirectLight);
-    }
-    pass.dispatchThreads(r.width, r.height, {LUMINA_SP_SCREEN_GROUP, LUMINA_SP_SCREEN_GROUP});
+        .write(0, r.gather)
+        .dispatchThreads(r.width, r.height, {LUMINA_SP_SCREEN_GROUP, LUMINA_SP_SCREEN_GROUP});
 }
 
 } // namespace lumina::gi

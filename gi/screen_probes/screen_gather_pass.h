@@ -1,6 +1,5 @@
 #pragma once
-// Pass 11: full-resolution irradiance from the four nearest probes (where none lies on the pixel's
-// surface, the surface cache's indirect irradiance there, when there is one); sky pixels get none.
+// Pass 11: full-resolution irradiance from the four nearest probes; sky pixels get none.
 // Kernel: shaders/screen_probes/screen_gather.hlsl (its header says how).
 #include "gi/core/frame_context.h"
 #include "gi/screen_probes/screen_probe_view.h"

@@ -25,7 +25,6 @@ void checkTexture(const rhi::TextureHandle& texture, const char* what, rhi::Text
 
 SurfaceCacheView surfaceCacheView(const surface_cache::SurfaceCache& cache) {
     return {.finalLighting = cache.atlas().layer(surface_cache::AtlasLayer::FinalLighting).texture,
-            .indirectLight = cache.atlas().layer(surface_cache::AtlasLayer::IndirectLight).texture,
             .cards = cache.cardBuffer(),
             .cardBvh = cache.cardBvhBuffer(),
             .voxelLighting = cache.voxelLighting().volume(),
@@ -34,8 +33,6 @@ SurfaceCacheView surfaceCacheView(const surface_cache::SurfaceCache& cache) {
 
 void checkSurfaceCacheView(const SurfaceCacheView& view) {
     checkTexture(view.finalLighting, "final lighting", rhi::TextureDimension::Texture2D,
-                 "an RGBA16F 2D texture (one layer)");
-    checkTexture(view.indirectLight, "indirect light", rhi::TextureDimension::Texture2D,
                  "an RGBA16F 2D texture (one layer)");
     checkTexture(view.voxelLighting, "voxel lighting", rhi::TextureDimension::Texture3D,
                  "an RGBA16F 3D texture");

@@ -1,10 +1,9 @@
 #pragma once
 // What the screen probes read of a surface cache (docs/surface_cache.md): the near field looks up
 // the card that owns a hit and reads its final lighting; the voxel lighting stands in where no
-// card does, and lights far-field hits when the caller gives no volume of its own; the final
-// gather reads the indirect irradiance of the card under a pixel that no probe's surface matches. Handles,
-// not the cache, so that anything holding these resources can be read; fill it from a SurfaceCache with
-// surfaceCacheView():
+// card does, and lights far-field hits when the caller gives no volume of its own. Handles, not
+// the cache, so that anything holding these resources can be read; fill it from a SurfaceCache
+// with surfaceCacheView():
 //
 //   probes.record(frame, {..., .surfaceCache = gi::surfaceCacheView(cache)});
 #include "rhi/rhi.h"
@@ -18,7 +17,6 @@ namespace lumina::gi {
 
 struct SurfaceCacheView {
     rhi::TextureHandle finalLighting; // RGBA16F Texture2D atlas: outgoing radiance, a = 1 where captured
-    rhi::TextureHandle indirectLight; // RGBA16F Texture2D atlas: indirect irradiance (radiosity)
     rhi::BufferHandle cards;          // StructuredBuffer<SurfaceCard>
     rhi::BufferHandle cardBvh;        // StructuredBuffer<CardBvhNode> over those cards
     rhi::TextureHandle voxelLighting; // RGBA16F 3D over voxelGrid, LUMINA_VOXEL_FACES face columns
@@ -26,7 +24,7 @@ struct SurfaceCacheView {
     gpu::VoxelGridInfo voxelGrid{};
 };
 
-// The cache's final and indirect layers, cards, card BVH and voxel lighting.
+// The cache's final layer, cards, card BVH and voxel lighting.
 SurfaceCacheView surfaceCacheView(const surface_cache::SurfaceCache& cache);
 
 // Throws std::invalid_argument naming the first missing resource or bad format.

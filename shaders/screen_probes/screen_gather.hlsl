@@ -1,18 +1,12 @@
 // lumina-kernel: cs main
-// lumina-kernel: cs withSurfaceCache
 // Pass 11, final gather: irradiance at every pixel from the four probes around it. Weights:
 // bilinear in the probe grid x exp(-plane distance / (filterPlaneScale x view depth)) x
 // max(0, n . n_probe)^filterNormalPower, so a pixel reads probes on its own surface; each probe's tile of
 // the irradiance atlas is sampled (hardware bilinear, the border makes it seamless) in the pixel's
-// normal direction. Where no probe passes (a surface narrower on screen than the probe spacing:
-// the top of a block seen at a grazing angle, between probes on its face and on the wall behind),
-// `withSurfaceCache` reads the surface cache's indirect irradiance at the pixel (the card that owns
-// it, as the near field finds a hit's), which is that surface's own; `main`, and a pixel no card
-// holds, use the bilinear weights of the valid probes alone. Sky pixels get none. One thread per
-// pixel; output irradiance, in the scene's radiance units x steradian (pi L under a uniform
-// radiance L).
+// normal direction. Where no probe passes, the bilinear weights of the valid ones alone are used.
+// Sky pixels get none. One thread per pixel; output irradiance, in the scene's radiance units x
+// steradian (pi L under a uniform radiance L).
 #include "screen_probes/screen_probe_common.hlsli"
-#include "surface_cache/card_bvh_shared.h"
 
 Texture2D<float4> gNormal : register(t0);
 Texture2D<float4> gPosition : register(t1);
@@ -20,18 +14,6 @@ StructuredBuffer<ScreenProbe> gProbes : register(t2);
 Texture2D<float4> gIrradiance : register(t3);
 SamplerState gLinearClamp : register(s0);
 LUMINA_UAV_FORMAT(rgba16f) RWTexture2D<float4> gGather : register(u0); // rgb: irradiance; a: 1 on surfaces
-// withSurfaceCache only:
-StructuredBuffer<CardBvhNode> gCardBvh : register(t8);
-StructuredBuffer<SurfaceCard> gCards : register(t9);
-Texture2D<float4> gFinalLighting : register(t10);  // a = 1 where a surface was captured
-Texture2D<float4> gIndirectLight : register(t11);  // indirect irradiance
-
-#define LUMINA_CARD_BVH_NODE(i) gCardBvh[i]
-#define LUMINA_SURFACE_CARD(i) gCards[i]
-#include "surface_cache/card_bvh_traversal.hlsli"
-#define LUMINA_FINAL_LIGHTING gFinalLighting
-#define LUMINA_INDIRECT_LIGHTING gIndirectLight
-#include "surface_cache/card_radiance.hlsli"
 
 // Total weight below which the surface-aware weights are not trusted.
 #define LUMINA_SP_MIN_GATHER_WEIGHT 1e-4
@@ -44,8 +26,7 @@ float3 sampleProbe(uint probe, float3 n) {
     return gIrradiance.SampleLevel(gLinearClamp, texel / atlas, 0.0).rgb;
 }
 
-// The pixel's irradiance; `surfaceCache` is a literal, so `main` compiles without the cache's reads.
-void gather(uint3 id, bool surfaceCache) {
+[numthreads(LUMINA_SP_SCREEN_GROUP, LUMINA_SP_SCREEN_GROUP, 1)] void main(uint3 id : SV_DispatchThreadID) {
     if (id.x >= gSp.imageSize.x || id.y >= gSp.imageSize.y) {
         return;
     }
@@ -85,28 +66,8 @@ void gather(uint3 id, bool surfaceCache) {
     float3 result = float3(0.0, 0.0, 0.0);
     if (surfaceWeight > LUMINA_SP_MIN_GATHER_WEIGHT) {
         result = surfaceSum / surfaceWeight;
-    } else {
-        float4 cached = float4(0.0, 0.0, 0.0, 0.0);
-        if (surfaceCache) {
-            const CardOwner owner = findCardOwner(position.xyz, n);
-            if (owner.card != LUMINA_NO_CARD) {
-                cached = cardIndirectIrradiance(gCards[owner.card], position.xyz);
-            }
-        }
-        if (cached.a > 0.0) {
-            result = cached.rgb;
-        } else if (plainWeight > 0.0) {
-            result = plainSum / plainWeight;
-        }
+    } else if (plainWeight > 0.0) {
+        result = plainSum / plainWeight;
     }
     gGather[id.xy] = float4(result, 1.0);
-}
-
-[numthreads(LUMINA_SP_SCREEN_GROUP, LUMINA_SP_SCREEN_GROUP, 1)] void main(uint3 id : SV_DispatchThreadID) {
-    gather(id, false);
-}
-
-[numthreads(LUMINA_SP_SCREEN_GROUP, LUMINA_SP_SCREEN_GROUP, 1)] void withSurfaceCache(uint3 id
-                                                                                       : SV_DispatchThreadID) {
-    gather(id, true);
 }

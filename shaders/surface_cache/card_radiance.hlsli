@@ -7,9 +7,6 @@
 //   Texture2D<float4> gFinalLighting : register(t10); // outgoing radiance; a = 1 where captured
 //   #define LUMINA_FINAL_LIGHTING gFinalLighting
 //   #include "surface_cache/card_radiance.hlsli"
-//
-// An includer that also names the indirect layer (LUMINA_INDIRECT_LIGHTING: irradiance, its alpha
-// not a coverage) gets cardIndirectIrradiance, the same footprint over that layer.
 #include "surface_cache/surface_card_shared.h"
 
 #if !defined(LUMINA_FINAL_LIGHTING)
@@ -19,15 +16,6 @@
 // Summed coverage below which a card's footprint counts as uncaptured (the caller falls back to
 // the voxel lighting).
 #define LUMINA_CARD_MIN_COVERAGE 1e-3f
-
-// Where p falls among `card`'s texels: the texel-centre coordinates clamped into the card's
-// rectangle (returned), and the rectangle's last texel.
-float2 cardFootprint(SurfaceCard card, float3 p, out float2 rectMax) {
-    const float2 rectMin = float2(card.atlasRect.xy);
-    rectMax = rectMin + float2(card.atlasRect.zw) - 1.0;
-    // Texel-centre coordinates: texel i's centre at i.
-    return clamp(cardToAtlasTexel(card, worldToCardSpace(card, p).xy) - 0.5, rectMin, rectMax);
-}
 
 // The final layer around world point p on `card`: bilinear over the four texels around p's
 // card-space (u, v), each weighted by its coverage so that uncaptured texels (a = 0, rgb = 0) do
@@ -39,8 +27,10 @@ float4 cardRadiance(SurfaceCard card, float3 p) {
     if (card.atlasRect.z == 0u) {
         return float4(0.0, 0.0, 0.0, 0.0); // evicted by the card LOD: no texels
     }
-    float2 rectMax;
-    const float2 x = cardFootprint(card, p, rectMax);
+    const float2 rectMin = float2(card.atlasRect.xy);
+    const float2 rectMax = rectMin + float2(card.atlasRect.zw) - 1.0;
+    // Texel-centre coordinates: texel i's centre at i.
+    const float2 x = clamp(cardToAtlasTexel(card, worldToCardSpace(card, p).xy) - 0.5, rectMin, rectMax);
     const float2 base = floor(x);
     const float2 f = x - base;
     float4 sum = float4(0.0, 0.0, 0.0, 0.0);
@@ -54,29 +44,5 @@ float4 cardRadiance(SurfaceCard card, float3 p) {
     }
     return sum.a > LUMINA_CARD_MIN_COVERAGE ? float4(sum.rgb / sum.a, sum.a) : float4(0.0, 0.0, 0.0, 0.0);
 }
-
-#if defined(LUMINA_INDIRECT_LIGHTING)
-// The indirect layer (irradiance from radiosity) around p on `card`, over cardRadiance's
-// footprint with the final layer's coverage as the weights (the indirect layer's alpha is 1 on
-// every texel radiosity wrote, surface or not). a: the summed weight, 0 where nothing was captured.
-float4 cardIndirectIrradiance(SurfaceCard card, float3 p) {
-    if (card.atlasRect.z == 0u) {
-        return float4(0.0, 0.0, 0.0, 0.0);
-    }
-    float2 rectMax;
-    const float2 x = cardFootprint(card, p, rectMax);
-    const float2 base = floor(x);
-    const float2 f = x - base;
-    float4 sum = float4(0.0, 0.0, 0.0, 0.0);
-    for (uint corner = 0u; corner < 4u; ++corner) {
-        const float2 offset = float2(corner & 1u, corner >> 1);
-        const float2 w2 = lerp(1.0 - f, f, offset);
-        const int3 texel = int3(int2(min(base + offset, rectMax)), 0);
-        const float w = w2.x * w2.y * LUMINA_FINAL_LIGHTING.Load(texel).a;
-        sum += float4(w * LUMINA_INDIRECT_LIGHTING.Load(texel).rgb, w);
-    }
-    return sum.a > LUMINA_CARD_MIN_COVERAGE ? float4(sum.rgb / sum.a, sum.a) : float4(0.0, 0.0, 0.0, 0.0);
-}
-#endif
 
 #endif
