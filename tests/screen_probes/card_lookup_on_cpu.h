@@ -11,8 +11,8 @@ namespace lumina::test {
 
 // Coverage-weighted bilinear around p's texel on `card`, clamped into the card's rectangle: the
 // weights from `coverage`'s alpha (the final layer), the values from `value`'s rgb (the final
-// layer for cardRadiance, the indirect layer for cardIndirectIrradiance). a: the summed weight, 0
-// where nothing was captured.
+// layer again for cardRadiance; another layer of the atlas reads over the same footprint). a: the
+// summed weight, 0 where nothing was captured.
 inline glm::vec4 cardLayerOnCpu(const gpu::SurfaceCard& card, const std::vector<glm::vec4>& coverage,
                                 const std::vector<glm::vec4>& value, uint32_t atlasSize, glm::vec3 p) {
     const glm::vec2 rectMin(float(card.atlasRect.x), float(card.atlasRect.y));
