@@ -28,17 +28,26 @@ float3 probeRayOrigin(ScreenProbe p) {
     // field has no side: in sunlit_rooms a floor probe 1 cm from the north wall was pushed through
     // it and saw the sky and the wall's sunlit outside (mean ray radiance 5.8 against the room's
     // 0.1; docs/gi.md, energy). The camera sees the probe, so it lies on the probe's side of every
-    // wall beside it: a push away from the camera would cross one, and the origin moves towards
-    // the camera instead, into the free space between them.
+    // wall beside it, and the origin moves only towards the camera's side along each axis: the
+    // field's gain one step that way, per axis, gives the push. A central gradient has no side on a
+    // wall's plane: at 1080p (low) a probe where two walls and the roof meet had its origin on the
+    // side wall's plane, the gradient's component across it was zero, and the push only moved it
+    // down the plane; half its rays went out through the wall (docs/gi.md, defects).
     const float clearance = 0.5 * gSp.originBias;
     const float3 towardCamera = normalize(gSp.camera.position - p.positionAndDepth.xyz);
+    const float3 cameraSide = float3(towardCamera.x >= 0.0 ? 1.0 : -1.0, towardCamera.y >= 0.0 ? 1.0 : -1.0,
+                                     towardCamera.z >= 0.0 ? 1.0 : -1.0);
     for (uint step = 0u; step < LUMINA_SP_ORIGIN_PUSH_STEPS; ++step) {
         const float distance = sdfSampleGlobal(origin);
         if (distance >= clearance) {
             break;
         }
-        const float3 gradient = sdfGlobalNormal(origin);
-        const float3 push = dot(gradient, towardCamera) >= 0.0 ? gradient : towardCamera;
+        const float3 gain = max(float3(sdfSampleGlobal(origin + float3(cameraSide.x * clearance, 0.0, 0.0)),
+                                       sdfSampleGlobal(origin + float3(0.0, cameraSide.y * clearance, 0.0)),
+                                       sdfSampleGlobal(origin + float3(0.0, 0.0, cameraSide.z * clearance))) -
+                                    distance,
+                                0.0);
+        const float3 push = any(gain > 0.0) ? cameraSide * normalize(gain) : towardCamera;
         origin += push * (clearance - distance);
     }
     return origin;
