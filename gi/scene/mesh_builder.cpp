@@ -79,6 +79,38 @@ void MeshBuilder::box(const glm::vec3& lo, const glm::vec3& hi, bool inward, uin
     }
 }
 
+void MeshBuilder::roomFace(const glm::vec3& min, const glm::vec3& max, const std::vector<float>& xs,
+                           const std::vector<float>& zs, uint32_t face,
+                           const std::function<bool(size_t, size_t)>& skip) {
+    const glm::vec3 centre = (min + max) * 0.5f;
+    // Front face into the room: away from the quad's mirror image through the room's centre.
+    const auto inward = [&](const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::vec3& d) {
+        quadFacingAwayFrom(a, b, c, d, 0.5f * (a + b + c + d) - centre);
+    };
+    const uint32_t axis = face / 2;
+    const float at = face % 2 == 0 ? min[axis] : max[axis];
+    if (axis == 1) { // floor or ceiling: a cell per pair of cuts
+        for (size_t i = 0; i + 1 < xs.size(); ++i) {
+            for (size_t k = 0; k + 1 < zs.size(); ++k) {
+                if (!skip || !skip(i, k)) {
+                    inward({xs[i], at, zs[k]}, {xs[i + 1], at, zs[k]}, {xs[i + 1], at, zs[k + 1]},
+                           {xs[i], at, zs[k + 1]});
+                }
+            }
+        }
+        return;
+    }
+    // A wall: a full-height piece per pair of cuts along it.
+    const std::vector<float>& cuts = axis == 0 ? zs : xs;
+    for (size_t i = 0; i + 1 < cuts.size(); ++i) {
+        const auto point = [&](float along, float y) {
+            return axis == 0 ? glm::vec3(at, y, along) : glm::vec3(along, y, at);
+        };
+        inward(point(cuts[i], min.y), point(cuts[i + 1], min.y), point(cuts[i + 1], max.y),
+               point(cuts[i], max.y));
+    }
+}
+
 void MeshBuilder::cylinder(const glm::vec3& base, float radius, float height, uint32_t segments,
                            uint32_t rings) {
     const auto first = uint32_t(mesh_.positions.size());

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace lumina::scene {
 
@@ -27,6 +28,15 @@ public:
     // An axis-aligned box; `inward` puts the front faces inside (a room). Faces whose bit is
     // set in `skipFaces` are left out: bit 0 -x, 1 +x, 2 -y, 3 +y, 4 -z, 5 +z.
     void box(const glm::vec3& min, const glm::vec3& max, bool inward = false, uint32_t skipFaces = 0);
+    // One face of a room's inside, the box from `min` to `max` (face numbered as in box()), facing
+    // into the room and cut into quads at `xs` and `zs` (sorted, from min to max along x and z; the
+    // walls span the full height). Faces cut at the same xs and zs share every edge end to end, so
+    // the room is watertight: where one quad's edge ends part-way along its neighbour's (a
+    // T-junction), the rasteriser can miss a pixel on the seam and show what lies behind it.
+    // `skip(i, k)` leaves out the floor or ceiling cell between xs[i..i+1] and zs[k..k+1] (an opening).
+    void roomFace(const glm::vec3& min, const glm::vec3& max, const std::vector<float>& xs,
+                  const std::vector<float>& zs, uint32_t face,
+                  const std::function<bool(size_t, size_t)>& skip = {});
     // A smooth open cylinder along +y, with `segments` around and `rings` along it.
     void cylinder(const glm::vec3& base, float radius, float height, uint32_t segments, uint32_t rings);
     // A grid of (nu x nv) quads over origin + s*u + t*v, s and t in [0, 1], displaced by

@@ -4,6 +4,7 @@
 #include "gi/scene/mesh_builder.h"
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <vector>
 
 namespace lumina::scene {
 
@@ -35,23 +36,19 @@ Scene makeOpenTopBox() {
     };
 
     MeshBuilder room("room");
+    // Watertight (MeshBuilder::roomFace): walls, floor and roof cut into a grid at the opening's edges.
+    const glm::vec3 min(-kHalfWidth, 0.0f, -kHalfWidth), max(kHalfWidth, kHeight, kHalfWidth);
+    const std::vector<float> xs{-kHalfWidth, kHoleMinX, kHoleMaxX, kHalfWidth},
+        zs{-kHalfWidth, kHoleMinZ, kHoleMaxZ, kHalfWidth};
+    enum Face : uint32_t { kWestWall, kEastWall, kFloorFace, kRoofFace, kSouthWall, kNorthWall };
     room.material(kWalls);
-    // Walls and floor face into the room; the roof is built around the opening.
-    room.box({-kHalfWidth, 0.0f, -kHalfWidth}, {kHalfWidth, kHeight, kHalfWidth}, /*inward=*/true,
-             /*skipFaces=*/(1u << 2) | (1u << 3));
+    for (const uint32_t face : {kWestWall, kEastWall, kSouthWall, kNorthWall}) {
+        room.roomFace(min, max, xs, zs, face);
+    }
     room.material(kFloor);
-    room.quad({-kHalfWidth, 0.0f, -kHalfWidth}, {-kHalfWidth, 0.0f, kHalfWidth},
-              {kHalfWidth, 0.0f, kHalfWidth}, {kHalfWidth, 0.0f, -kHalfWidth});
+    room.roomFace(min, max, xs, zs, kFloorFace);
     room.material(kRoof);
-    const float y = kHeight;
-    auto roofPanel = [&](float x0, float z0, float x1, float z1) {
-        // Facing down, into the room.
-        room.quad({x0, y, z0}, {x1, y, z0}, {x1, y, z1}, {x0, y, z1});
-    };
-    roofPanel(-kHalfWidth, -kHalfWidth, kHalfWidth, kHoleMinZ);
-    roofPanel(-kHalfWidth, kHoleMaxZ, kHalfWidth, kHalfWidth);
-    roofPanel(-kHalfWidth, kHoleMinZ, kHoleMinX, kHoleMaxZ);
-    roofPanel(kHoleMaxX, kHoleMinZ, kHalfWidth, kHoleMaxZ);
+    room.roomFace(min, max, xs, zs, kRoofFace, [](size_t i, size_t k) { return i == 1 && k == 1; });
     scene.meshes.push_back(room.finish());
 
     MeshBuilder block("block");
