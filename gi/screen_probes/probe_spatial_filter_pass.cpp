@@ -10,6 +10,7 @@ void ProbeSpatialFilterPass::record(FrameContext& frame, const ScreenProbeView& 
         .constantBuffer(1, r.constants)
         .read(0, r.probes[view.current])
         .read(1, r.history[view.current])
+        .read(2, r.probeAge[view.current])
         .write(0, r.filtered)
         .dispatch(view.groupsX(), view.groupsY());
 }

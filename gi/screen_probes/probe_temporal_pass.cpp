@@ -12,7 +12,9 @@ void ProbeTemporalPass::record(FrameContext& frame, const ScreenProbeView& view)
         .read(1, r.probes[view.previous()])
         .read(2, r.frameRadiance)
         .read(3, r.history[view.previous()])
+        .read(4, r.probeAge[view.previous()])
         .write(0, r.history[view.current])
+        .write(1, r.probeAge[view.current])
         .dispatch(view.groupsX(), view.groupsY());
 }
 

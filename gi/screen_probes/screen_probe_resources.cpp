@@ -46,6 +46,7 @@ ScreenProbeResources ScreenProbeResources::create(rhi::IDevice& device, uint32_t
         const std::string half = i == 0 ? " A" : " B";
         r.probes[i] = structured(device, r.probeCount, sizeof(gpu::ScreenProbe), "probes" + half);
         r.history[i] = structured(device, texels, sizeof(gpu::float4), "radiance history" + half);
+        r.probeAge[i] = structured(device, r.probeCount, sizeof(uint32_t), "probe age" + half);
         r.screenIrradiance[i] =
             storage2d(device, rhi::Format::RGBA16_FLOAT, width, height, "screen irradiance" + half);
         r.screenPosition[i] =

@@ -7,12 +7,19 @@
 //   StructuredBuffer<float4> gPreviousHistory;       // probe_temporal's output of last frame
 #include "screen_probes/screen_probe_common.hlsli"
 
-// Texel t of the history of `current` (frame f): the old probe its position reprojects to, if it
-// saw the same surface (historyMatches), looked up in the same world direction. Zero (weight 0)
-// where there is none: no history, a probe that moved, a direction below the old probe's plane.
-float4 historyTexel(ScreenProbe current, ProbeFrame f, uint t) {
+// The old probe whose history `current` continues: the one its position reprojects to, if it saw
+// the same surface (historyMatches); else -1.
+int historyProbe(ScreenProbe current) {
     const int candidate = historyProbeCandidate(current.positionAndDepth.xyz);
-    if (candidate < 0 || !historyMatches(current, gPreviousProbes[candidate])) {
+    return candidate >= 0 && historyMatches(current, gPreviousProbes[candidate]) ? candidate : -1;
+}
+
+// Texel t of the history of `current` (frame f): historyProbe's, looked up in the same world
+// direction. Zero (weight 0) where there is none: no history, a probe that moved, a direction below
+// the old probe's plane.
+float4 historyTexel(ScreenProbe current, ProbeFrame f, uint t) {
+    const int candidate = historyProbe(current);
+    if (candidate < 0) {
         return float4(0.0, 0.0, 0.0, 0.0);
     }
     const int texel = texelInFrame(probeFrame(gPreviousProbes[candidate].normal.xyz), texelDirection(f, t));

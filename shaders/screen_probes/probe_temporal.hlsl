@@ -10,21 +10,26 @@
 // 2 took a quarter of the Cornell box floor's light; clamping against the probe's brightest texel
 // instead kept all of it but let the image flicker ten times more (docs/screen_probes.md). L' is
 // a convex combination of inputs, so accumulation never exceeds the largest input; non-finite
-// results are written as empty texels, so NaN and Inf never enter history. One group per probe,
-// one thread per texel.
+// results are written as empty texels, so NaN and Inf never enter history. The probe's age, the
+// frames of history it continues (0 for a new probe, scaled down with the weight a change region
+// takes away), goes to gProbeAge for the spatial filter. One group per probe, one thread per texel.
 #include "screen_probes/screen_probe_common.hlsli"
 
 StructuredBuffer<ScreenProbe> gProbes : register(t0);
 StructuredBuffer<ScreenProbe> gPreviousProbes : register(t1);
-StructuredBuffer<float4> gFrameRadiance : register(t2);    // probe_composite's output
-StructuredBuffer<float4> gPreviousHistory : register(t3);  // this pass's output last frame
+StructuredBuffer<float4> gFrameRadiance : register(t2);   // probe_composite's output
+StructuredBuffer<float4> gPreviousHistory : register(t3); // this pass's output last frame
+StructuredBuffer<uint> gPreviousProbeAge : register(t4);  // this pass's ages last frame
 RWStructuredBuffer<float4> gHistory : register(u0);
+RWStructuredBuffer<uint> gProbeAge : register(u1);
 #include "screen_probes/probe_history.hlsli"
 
 groupshared float gsLuminance[LUMINA_SP_PROBE_TEXELS];
 groupshared float gsSolidAngle[LUMINA_SP_PROBE_TEXELS];
 
-[numthreads(LUMINA_SP_PROBE_TEXELS, 1, 1)] void main(uint3 group : SV_GroupID, uint t : SV_GroupIndex) {
+[numthreads(LUMINA_SP_PROBE_TEXELS, 1, 1)] void main(uint3 group
+                                                     : SV_GroupID, uint t
+                                                     : SV_GroupIndex) {
     const uint probe = probeIndexOfGroup(group);
     if (probe >= gSp.probeCount || !probeIsValid(gProbes[probe])) {
         return;
@@ -32,6 +37,13 @@ groupshared float gsSolidAngle[LUMINA_SP_PROBE_TEXELS];
     const ScreenProbe current = gProbes[probe];
     const ProbeFrame frame = probeFrame(current.normal.xyz);
     const float4 history = historyTexel(current, frame, t);
+    const float keep = historyKeep(current.positionAndDepth.xyz);
+    if (t == 0u) {
+        const int previous = historyProbe(current);
+        gProbeAge[probe] =
+            previous < 0 ? 0u
+                         : min(uint(float(gPreviousProbeAge[previous]) * keep) + 1u, LUMINA_SP_MAX_PROBE_AGE);
+    }
     const float solidAngle = texelSolidAngle(t);
     gsLuminance[t] = history.a > 0.0 ? luminance(history.rgb) * solidAngle : 0.0;
     gsSolidAngle[t] = history.a > 0.0 ? solidAngle : 0.0;
@@ -57,7 +69,7 @@ groupshared float gsSolidAngle[LUMINA_SP_PROBE_TEXELS];
     }
     const float a = gSp.probeHistoryBlend;
     // Where the scene changed, the old light is (partly) wrong: it keeps less weight.
-    const float oldWeight = (1.0 - a) * history.a * historyKeep(current.positionAndDepth.xyz);
+    const float oldWeight = (1.0 - a) * history.a * keep;
     const float newWeight = a * x.a;
     const float weight = oldWeight + newWeight;
     float4 result = weight > 0.0 ? float4((oldWeight * history.rgb + newWeight * x.rgb) / weight, weight)

@@ -26,6 +26,9 @@ LUMINA_GPU_NAMESPACE_BEGIN
 // Cells (in world size at the probe's depth) a history probe may lie from the new one: the old
 // cell centre is up to half a cell's diagonal from where the surface reprojects, plus rounding.
 #define LUMINA_SP_HISTORY_MAX_CELLS 1.5f
+// The most frames of history a probe's age counts (probe_temporal.hlsl): the spatial filter's share
+// (1 - probeHistoryBlend)^age is below 1e-8 long before it.
+#define LUMINA_SP_MAX_PROBE_AGE 1024u
 
 // ScreenProbe::info.x
 // World boxes where the scene changed since the last frame (a moved object's old and new place, a
