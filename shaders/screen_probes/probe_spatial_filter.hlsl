@@ -22,9 +22,7 @@ StructuredBuffer<float4> gHistory : register(t1);
 StructuredBuffer<uint> gProbeAge : register(t2);     // probe_temporal's ages this frame
 RWStructuredBuffer<float4> gFiltered : register(u0); // rgb: radiance; a: 1 where any sample had data
 
-[numthreads(LUMINA_SP_PROBE_TEXELS, 1, 1)] void main(uint3 group
-                                                     : SV_GroupID, uint t
-                                                     : SV_GroupIndex) {
+[numthreads(LUMINA_SP_PROBE_TEXELS, 1, 1)] void main(uint3 group : SV_GroupID, uint t : SV_GroupIndex) {
     const uint probe = probeIndexOfGroup(group);
     if (probe >= gSp.probeCount || !probeIsValid(gProbes[probe])) {
         return;

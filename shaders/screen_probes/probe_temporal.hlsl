@@ -27,9 +27,7 @@ RWStructuredBuffer<uint> gProbeAge : register(u1);
 groupshared float gsLuminance[LUMINA_SP_PROBE_TEXELS];
 groupshared float gsSolidAngle[LUMINA_SP_PROBE_TEXELS];
 
-[numthreads(LUMINA_SP_PROBE_TEXELS, 1, 1)] void main(uint3 group
-                                                     : SV_GroupID, uint t
-                                                     : SV_GroupIndex) {
+[numthreads(LUMINA_SP_PROBE_TEXELS, 1, 1)] void main(uint3 group : SV_GroupID, uint t : SV_GroupIndex) {
     const uint probe = probeIndexOfGroup(group);
     if (probe >= gSp.probeCount || !probeIsValid(gProbes[probe])) {
         return;
