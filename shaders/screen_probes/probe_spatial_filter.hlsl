@@ -27,15 +27,15 @@ RWStructuredBuffer<float4> gFiltered : register(u0); // rgb: radiance; a: 1 wher
     if (probe >= gSp.probeCount || !probeIsValid(gProbes[probe])) {
         return;
     }
+    // Read first: loaded later, into a register whose other lanes held the direction, the age
+    // scrambled the filtered map on D3D12 under Wine (docs/d3d12.md, "The frame on D3D12 under Wine").
+    const uint age = gProbeAge[probe];
     const ScreenProbe centre = gProbes[probe];
     const float3 direction = texelDirection(probeFrame(centre.normal.xyz), t);
     const float4 own = gHistory[probe * LUMINA_SP_PROBE_TEXELS + t];
     float3 sum = own.a > 0.0 ? own.rgb : float3(0.0, 0.0, 0.0);
     float weight = own.a > 0.0 ? 1.0 : 0.0;
-    const uint age = gProbeAge[probe];
-    // The fading is held off: on D3D12 (vkd3d under Wine) the filtered map at frame 2 differed from
-    // Vulkan's with it (docs/gi.md, energy 27.); the age is still read, never 0xFFFFFFFF.
-    const float youth = age == 0xFFFFFFFFu ? exp2(float(age) * log2(1.0 - gSp.probeHistoryBlend)) : 1.0;
+    const float youth = own.a > 0.0 && age > 0u ? exp2(float(age) * log2(1.0 - gSp.probeHistoryBlend)) : 1.0;
     const int2 offsets[4] = {int2(-1, 0), int2(1, 0), int2(0, -1), int2(0, 1)};
     const int2 cell = int2(group.xy);
     for (uint k = 0u; k < 4u; ++k) {
