@@ -28,11 +28,17 @@ LUMINA_GPU_NAMESPACE_BEGIN
 // knows the plane of the surface's own triangles, the sun's taps are compared with that plane
 // instead and the receiver is not moved (the offset lifted a floor point beside a wall above the
 // wall's foot, and the sun reached it through the wall); the slope bias, a tenth of the plane's
-// depth change per texel, covers planes taken across two facets of a curved mesh. Only planes
-// within 70 degrees of the sun (cosine 0.34): further, a texel's worth of error in the plane is
-// several texels of depth, and city's facades lit at grazing angles showed acne.
+// depth change per texel, covers planes taken across two facets of a curved mesh. Where the
+// shading normal is the plane's own (within 0.8 degrees: a flat surface, no facets to cover) the
+// depth bias is a fiftieth of a texel instead of a tenth, which let the sun through the bottom
+// millimetres of a zero-thickness wall onto the floor row at its foot; on a curved mesh the
+// smaller bias striped the engine's end caps. Only planes within 70 degrees of the sun (cosine
+// 0.34): further, a texel's worth of error in the plane is several texels of depth, and city's
+// facades lit at grazing angles showed acne.
 #define LUMINA_SUN_NORMAL_OFFSET_TEXELS 1.5f
 #define LUMINA_SUN_DEPTH_BIAS_TEXELS 0.1f
+#define LUMINA_SUN_FLAT_DEPTH_BIAS_TEXELS 0.02f
+#define LUMINA_SUN_FLAT_MIN_COSINE 0.9999f
 #define LUMINA_SUN_SLOPE_BIAS 0.1f
 #define LUMINA_SUN_PLANE_MIN_COSINE 0.34f
 #define LUMINA_POINT_NORMAL_OFFSET_TEXELS 1.5f

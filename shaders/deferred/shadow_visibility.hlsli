@@ -97,7 +97,9 @@ float sunVisibility(float3 position, float3 normal, float3 planeNormal, bool has
         return 1.0; // outside the fitted map: nothing there casts a shadow
     }
     const float2 slope = onPlane ? sunReceiverSlope(planeNormal, facing, texelWorld) : float2(0.0, 0.0);
-    const float depthBias = LUMINA_SUN_DEPTH_BIAS_TEXELS * texelWorld / LUMINA_SHADOW_CONSTANTS.sunDepthRange;
+    const bool flat = onPlane && dot(planeNormal, normal) >= LUMINA_SUN_FLAT_MIN_COSINE;
+    const float biasTexels = flat ? LUMINA_SUN_FLAT_DEPTH_BIAS_TEXELS : LUMINA_SUN_DEPTH_BIAS_TEXELS;
+    const float depthBias = biasTexels * texelWorld / LUMINA_SHADOW_CONSTANTS.sunDepthRange;
     const float receiver = clip.z - depthBias - LUMINA_SUN_SLOPE_BIAS * length(slope);
     return pcf3x3(-1, uv, LUMINA_SHADOW_CONSTANTS.sunMapSize, receiver, slope);
 }
