@@ -25,7 +25,7 @@ targets=(
 )
 # GPU tests left out: suites of many frames (seconds to minutes each on lavapipe) and tests of
 # executables not built above (ctest lists those as *_NOT_BUILT).
-slow='NOT_BUILT|poison_stress|viewer|bench_smoke|skip_check_smoke|render_command|sky_cli_smoke|sh_grid_cli|ddgi_cli|Furnace|Cornell|RealScene|StoredReference|VsPathTracer|SkyRadiosity|DynamicScene'
+slow='NOT_BUILT|poison_stress|viewer|bench_smoke|skip_check_smoke|render_command|sky_cli_smoke|sealed_box_leak_smoke|sh_grid_cli|ddgi_cli|Furnace|Cornell|RealScene|StoredReference|VsPathTracer|SkyRadiosity|DynamicScene'
 
 # No DXBC kernels: the D3D12 build is not sanitized.
 cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Release -DLUMINA_SANITIZE=ON -DLUMINA_VKD3D_COMPILER=OFF
