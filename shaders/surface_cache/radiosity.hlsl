@@ -5,7 +5,8 @@
 // the cached surfaces per update.
 //   trace:     one thread per probe (every 4x4 texels) of the listed tiles: 16 rays over the
 //              hemisphere through the global SDF, each starting on the line through the
-//              probe's own point of the surface (surfaceLineStart), each hit reading the voxel
+//              probe's own point of the surface (surfaceLineStart), each hit that is not a
+//              graze of an open surface's shell (sdfFollowGraze) reading the voxel
 //              lighting (the last update's outgoing radiance), each ray that leaves the scene
 //              the sky (common/sky_sampling.hlsli), projected to L1 SH whose irradiance at the
 //              probe's normal is the rays' exact cosine-weighted sum (withIrradianceAt); counts
@@ -24,6 +25,8 @@
 #include "sdf/surface_line_start.hlsli"
 #include "surface_cache/surface_cache_lighting_shared.h"
 #include "surface_cache/surface_card_shared.h"
+// After the tracing library it follows grazes for.
+#include "sdf/open_surface_graze.hlsli"
 
 LUMINA_PUSH_CONSTANTS(RadiosityConstants, gConstants);
 Texture2DArray<float4> gSurface : register(t6); // layer 0 normal (a = captured)
@@ -373,6 +376,7 @@ void considerProbeSlot(uint2 probe, uint slot, uint sameCard, inout ProbeTexelCh
         float cosTheta = rayCosTheta[ray];
         SdfHit hit = sdfGlobalMarchHit(rayStart[ray], dir, rayEndT[ray], rayEnd[ray] >> 8u,
                                        rayEnd[ray] & 0xFFu, params);
+        hit = sdfFollowGraze(hit, dir, params);
         // A ray that leaves the scene sees the sky. One that ran out of steps (grazing a wall, deep
         // in a corner) is a miss too, but it is still inside: it sees nothing rather than a sky
         // that a closed room would not show it.

@@ -1,0 +1,83 @@
+#ifndef LUMINA_OPEN_SURFACE_GRAZE_HLSLI
+#define LUMINA_OPEN_SURFACE_GRAZE_HLSLI
+// A far-field hit on an open surface's shell that is a graze, not a hit (docs/gi.md, energy 29.).
+// An open surface (a zero-thickness sheet: a ceiling panel, a quad wall) is closed in the global
+// SDF by a shell of about half a global voxel plus 0.6 of its own mesh voxels, so that no ray
+// slips between two voxel centres. Seen edge-on, the shell gives the sheet a thickness: a ray that
+// passes just under two_rooms' panel, and would meet the ceiling beyond it, stops on the panel's
+// shell and reads the panel, and such rays were most of that scene's bright first bounce. So a hit
+// on an open instance's shell is followed along the ray to where it crosses the sheet's plane; if
+// the sheet is not there (its own SDF reads more than its shell: the ray passes the sheet's edge),
+// the ray goes on:
+//   - any other instance's surface met on the way (a sample, half a voxel apart, whose voxel names
+//     it, below the hit threshold) stops it there: a wall that meets the sheet's edge keeps the
+//     ray inside (tests/frame/data/sealed_box, gpu.sealed_box_leak_smoke), and a surface that
+//     carries on the sheet's plane (the ceiling around the panel: its normal within
+//     LUMINA_GRAZE_COPLANAR_COS of the sheet's) is met where the ray crosses that plane;
+//   - else the march resumes from the plane's crossing (the sky past an opening's rim).
+// Needs sdf/sdf_scene_bindings.hlsli first.
+
+// How far a graze may be followed (world units): a ray nearly parallel to the sheet crosses its
+// plane far away, past whatever the segment check could miss at that length.
+#define LUMINA_GRAZE_MAX_FOLLOW 0.5f
+// Samples of the segment check: at most this many, half a voxel apart.
+#define LUMINA_GRAZE_MAX_SAMPLES 32u
+#define LUMINA_GRAZE_COPLANAR_COS 0.9f
+
+// An instance's own distance at world point p (no shell), world units.
+float sdfInstanceDistance(SdfInstanceDesc instance, float3 p) {
+    SdfVolumeDesc volume = LUMINA_SDF_VOLUME(instance.ids.x);
+    return sdfSampleVolume(volume, LUMINA_SDF_SCENE.invAtlasDims, sdfWorldToObject(instance, p)) *
+           instance.worldMinAndScale.w;
+}
+
+// `hit` of a far-field march along unit `direction`, or where a graze of an open surface's shell
+// leads (above). `params` are the march's.
+SdfHit sdfFollowGraze(SdfHit hit, float3 direction, SdfTraceParams params) {
+    if (sdfIsMiss(hit)) {
+        return hit;
+    }
+    float3 p = hit.positionAndT.xyz;
+    float t = hit.positionAndT.w;
+    uint index = sdfGlobalInstanceAt(p);
+    if (index == LUMINA_SDF_NO_HIT) {
+        return hit;
+    }
+    SdfInstanceDesc instance = LUMINA_SDF_INSTANCE(index);
+    // Closed volumes have no shell (worldMax.w is 0): their zero crossing is their surface.
+    if (!(instance.worldMax.w > 0.0f)) {
+        return hit;
+    }
+    uint cascade = sdfGlobalCascadeAt(p);
+    float shell = instance.worldMax.w + LUMINA_SDF_SCENE.cascades[cascade].openShellExtra;
+    float3 n = sdfFacingNormal(hit.normalAndCoverage.xyz, direction, t);
+    float cosine = -dot(direction, n);
+    float depth = min(sdfInstanceDistance(instance, p), shell);
+    if (!(cosine > 0.0f) || !(depth > 0.0f)) {
+        return hit;
+    }
+    float follow = depth / cosine;
+    if (!(follow <= LUMINA_GRAZE_MAX_FOLLOW) ||
+        !(sdfInstanceDistance(instance, p + follow * direction) > shell)) {
+        return hit; // the sheet is where the ray crosses its plane: a hit
+    }
+    float3 origin = p - t * direction;
+    uint count = min(uint(ceil(follow / (0.5f * sdfGlobalVoxelSize(cascade)))), LUMINA_GRAZE_MAX_SAMPLES);
+    for (uint i = 1u; i <= count; ++i) {
+        float along = follow * float(i) / float(count);
+        float3 q = p + along * direction;
+        uint other = sdfGlobalInstanceAt(q);
+        if (other == index || other == LUMINA_SDF_NO_HIT ||
+            !(sdfSampleGlobal(q) < params.hitThresholdVoxels * sdfGlobalVoxelSizeAt(q))) {
+            continue;
+        }
+        bool carriesPlane = abs(dot(sdfGlobalNormal(q), n)) > LUMINA_GRAZE_COPLANAR_COS;
+        return sdfGlobalHit(origin, direction, t + (carriesPlane ? follow : along), hit.ids.w, 0.0f);
+    }
+    params.maxDistance = max(params.maxDistance - t - follow, 0.0f);
+    SdfHit next = sdfTraceGlobal(p + follow * direction, direction, 0.0f, params);
+    next.positionAndT.w += t + follow;
+    return next;
+}
+
+#endif
