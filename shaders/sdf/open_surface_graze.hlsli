@@ -65,7 +65,8 @@ SdfHit sdfFollowGraze(SdfHit hit, float3 direction, SdfTraceParams params) {
     float shell = instance.worldMax.w + LUMINA_SDF_SCENE.cascades[cascade].openShellExtra;
     float3 n = sdfFacingNormal(hit.normalAndCoverage.xyz, direction, t);
     float cosine = -dot(direction, n);
-    float depth = min(sdfInstanceDistance(instance, p), shell);
+    float ownAtHit = sdfInstanceDistance(instance, p);
+    float depth = min(ownAtHit, shell);
     if (!(cosine > 0.0f) || !(depth > 0.0f)) {
         return hit;
     }
@@ -83,7 +84,7 @@ SdfHit sdfFollowGraze(SdfHit hit, float3 direction, SdfTraceParams params) {
     float along = 0.0f;
     for (uint i = 0u; i < LUMINA_GRAZE_MAX_SAMPLES; ++i) {
         float3 q = p + along * direction;
-        float own = sdfInstanceDistance(instance, q);
+        float own = along > 0.0f ? sdfInstanceDistance(instance, q) : ownAtHit;
         // The ray meets the sheet's own mesh: a wall of the same mesh that meets the sheet's edge
         // (a room built as one box, the furnaces), or the sheet's edge itself, clipped.
         if (!(own >= reach)) {
