@@ -3,30 +3,24 @@
 // A far-field hit on an open surface's shell that is a graze, not a hit (docs/gi.md, energy 29.).
 // An open surface (a zero-thickness sheet: a ceiling panel, a quad wall) is closed in the global
 // SDF by a shell of about half a global voxel plus 0.6 of its own mesh voxels, so that no ray
-// slips between two voxel centres. Seen edge-on, the shell gives the sheet a thickness: a ray that
-// passes just under two_rooms' panel, and would meet the ceiling beyond it, stops on the panel's
-// shell and reads the panel, and such rays were most of that scene's bright first bounce. So a hit
-// on an open instance's shell is followed along the ray to where it crosses the sheet's plane; if
-// the sheet is not there (its own SDF reads more than its shell: the ray passes the sheet's edge),
-// the ray goes on, stepped along the segment to that crossing:
-//   - where it comes within reach of the sheet's own mesh again (a wall of the same mesh that
-//     meets the sheet's edge, as in the furnaces' one-box rooms; or the sheet's edge, clipped) it
-//     stops there;
-//   - any other instance's surface met on the way (a step ends at most half a voxel on, in a voxel
-//     that names it, below the hit threshold) stops it there: a wall that meets the sheet's edge
-//     keeps the ray inside (tests/frame/data/sealed_box, gpu.sealed_box_leak_smoke), and a surface
-//     that carries on the sheet's plane (the ceiling around the panel: its normal within
-//     LUMINA_GRAZE_COPLANAR_COS of the sheet's) is met where the ray crosses that plane;
-//   - else the march resumes from the plane's crossing (the sky past an opening's rim).
+// slips between two voxel centres. Seen edge-on, the shell gives the sheet a thickness, and beside
+// an edge it is rounded: a ray that passes just under a panel, or up through a skylight beside
+// its rim, stops on the shell and reads the sheet, though it never meets it. So a hit on an open
+// instance's shell is followed through the shell, stepped by the sheet's own distance:
+//   - where the ray comes within reach of the sheet's own mesh (the sheet, a wall of the same mesh
+//     that meets its edge as in the furnaces' one-box rooms, or its edge, clipped), or meets
+//     another instance's surface (a voxel that names it, below the hit threshold: a wall that
+//     meets the sheet's edge, tests/frame/data/sealed_box), the first hit stands;
+//   - where the global SDF leaves every shell, and no mesh's own SDF lies on the way through it
+//     (the near field: a solid thinner than the shell does not show in the global grid), the
+//     march resumes from there (the sky past an opening's rim).
 // Needs sdf/sdf_scene_bindings.hlsli first.
 
-// How far a graze may be followed (world units): a ray nearly parallel to the sheet crosses its
-// plane far away, past whatever the segment check could miss at that length.
+// How far a graze may be followed through the shell (world units): beyond it the first hit stands.
 #define LUMINA_GRAZE_MAX_FOLLOW 0.5f
-// Steps of the segment check: at most this many, each at least this many reaches (below) long.
+// Steps through the shell: at most this many, each at least this many reaches (below) long.
 #define LUMINA_GRAZE_MAX_SAMPLES 32u
 #define LUMINA_GRAZE_MIN_STEP_REACHES 0.25f
-#define LUMINA_GRAZE_COPLANAR_COS 0.9f
 
 // An instance's own distance at world point p (no shell), world units.
 float sdfInstanceDistance(SdfInstanceDesc instance, float3 p) {
@@ -63,49 +57,50 @@ SdfHit sdfFollowGraze(SdfHit hit, float3 direction, SdfTraceParams params) {
     }
     uint cascade = sdfGlobalCascadeAt(p);
     float shell = instance.worldMax.w + LUMINA_SDF_SCENE.cascades[cascade].openShellExtra;
-    float3 n = sdfFacingNormal(hit.normalAndCoverage.xyz, direction, t);
-    float cosine = -dot(direction, n);
-    float ownAtHit = sdfInstanceDistance(instance, p);
-    float depth = min(ownAtHit, shell);
-    if (!(cosine > 0.0f) || !(depth > 0.0f)) {
-        return hit;
-    }
-    float follow = depth / cosine;
-    if (!(follow <= LUMINA_GRAZE_MAX_FOLLOW) ||
-        !(sdfInstanceDistance(instance, p + follow * direction) > shell)) {
-        return hit; // the sheet is where the ray crosses its plane: a hit
-    }
-    // The segment to the plane's crossing, stepped by the sheet's own distance (less its reach,
-    // so that no stretch within reach is stepped over) and at most half a global voxel (so that
-    // no other instance's shell is).
-    float3 origin = p - t * direction;
+    // Through the shell, stepped by the sheet's own distance (less its reach, so that no stretch
+    // within reach is stepped over) and at most half a global voxel (so that no other instance's
+    // shell is).
     float reach = sdfOpenSurfaceReach(instance);
     float halfVoxel = 0.5f * sdfGlobalVoxelSize(cascade);
     float along = 0.0f;
     for (uint i = 0u; i < LUMINA_GRAZE_MAX_SAMPLES; ++i) {
         float3 q = p + along * direction;
-        float own = along > 0.0f ? sdfInstanceDistance(instance, q) : ownAtHit;
-        // The ray meets the sheet's own mesh: a wall of the same mesh that meets the sheet's edge
-        // (a room built as one box, the furnaces), or the sheet's edge itself, clipped.
+        float own = sdfInstanceDistance(instance, q);
+        // The ray meets the sheet's own mesh (the sheet, a wall of the same mesh that meets its
+        // edge as in the furnaces' one-box rooms, or its edge, clipped): the first hit stands.
         if (!(own >= reach)) {
-            if (along > 0.0f) {
-                hit = sdfGlobalHit(origin, direction, t + along, hit.ids.w, 0.0f);
-            }
             return hit;
         }
-        uint other = sdfGlobalInstanceAt(q);
-        if (along > 0.0f && other != index && other != LUMINA_SDF_NO_HIT &&
-            sdfSampleGlobal(q) < params.hitThresholdVoxels * sdfGlobalVoxelSizeAt(q)) {
-            bool carriesPlane = abs(dot(sdfGlobalNormal(q), n)) > LUMINA_GRAZE_COPLANAR_COS;
-            return sdfGlobalHit(origin, direction, t + (carriesPlane ? follow : along), hit.ids.w, 0.0f);
+        if (along > 0.0f) {
+            if (sdfSampleGlobal(q) >= params.hitThresholdVoxels * sdfGlobalVoxelSizeAt(q)) {
+                // Out of every shell, the sheet not met: the march goes on from here, if no mesh
+                // lies on the way through the shell. Each mesh's own SDF tells (the near field);
+                // the global grid cannot: a solid thinner than the shell (a door over a floor)
+                // does not show in it, and its voxels name the shell's instance.
+                SdfTraceParams segment = params;
+                segment.maxDistance = along;
+                segment.maxSteps = LUMINA_GRAZE_MAX_SAMPLES;
+                if (!sdfIsMiss(sdfTraceNearField(p, direction, 0.0f, segment))) {
+                    return hit;
+                }
+                params.maxDistance = max(params.maxDistance - t - along, 0.0f);
+                SdfHit next = sdfTraceGlobal(q, direction, 0.0f, params);
+                next.positionAndT.w += t + along;
+                return next;
+            }
+            // Another instance's surface (its voxel, below the hit threshold): the first hit
+            // stands. Stopping instead where the ray crosses the sheet's plane when that surface
+            // carries it on (the ceiling around two_rooms' panel) let light through `door`'s
+            // closed door (docs/gi.md, energy 29., v5-v8).
+            uint other = sdfGlobalInstanceAt(q);
+            if (other != index && other != LUMINA_SDF_NO_HIT) {
+                return hit;
+            }
         }
-        if (along >= follow) {
-            params.maxDistance = max(params.maxDistance - t - follow, 0.0f);
-            SdfHit next = sdfTraceGlobal(p + follow * direction, direction, 0.0f, params);
-            next.positionAndT.w += t + follow;
-            return next;
+        if (!(along < LUMINA_GRAZE_MAX_FOLLOW)) {
+            break;
         }
-        along = min(along + clamp(own - reach, LUMINA_GRAZE_MIN_STEP_REACHES * reach, halfVoxel), follow);
+        along += clamp(own - reach, LUMINA_GRAZE_MIN_STEP_REACHES * reach, halfVoxel);
     }
     return hit; // too many steps to tell: the graze stays a hit
 }

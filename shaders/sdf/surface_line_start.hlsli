@@ -19,10 +19,17 @@
 // drifted from Vulkan's (docs/gi.md, energy 22.).
 #define LUMINA_SURFACE_LINE_SLIDE_STEPS 8u
 
+// The radiosity trace's slide (docs/gi.md, energy 28. and 29.): 16 steps, each certified also by
+// a sample raised by the origin's height (where the surface's own plane is the nearest thing, that
+// ball reaches about 1.4 times the height along the surface), so that its shallow rays reach their
+// line too. Not yet checked against D3D12 under Wine (the drift above).
+#define LUMINA_SURFACE_LINE_RAISED_SLIDE_STEPS 16u
+
 // `origin` lies above `surfacePoint` along the unit normal `n`; `cosTheta` is dot(dir, n), passed
-// in because a caller that built `dir` from it has the exact value.
-float3 surfaceLineStart(float3 origin, float3 surfacePoint, float3 n, float3 dir, float cosTheta,
-                        float marginVoxels) {
+// in because a caller that built `dir` from it has the exact value. `raised`: certify each step by
+// a sample raised by the origin's height as well.
+float3 surfaceLineSlide(float3 origin, float3 surfacePoint, float3 n, float3 dir, float cosTheta,
+                        float marginVoxels, uint steps, bool raised) {
     float height = dot(origin - surfacePoint, n);
     float3 along = dir - cosTheta * n;
     float sinTheta = length(along);
@@ -35,16 +42,33 @@ float3 surfaceLineStart(float3 origin, float3 surfacePoint, float3 n, float3 dir
     // A flag, not `break` in a loop whose condition also tests `slid`: with 16 steps, lavapipe's
     // Vulkan and vkd3d's D3D12 computed that loop differently (the emissive box's cache 5 % apart).
     bool sliding = true;
-    for (uint step = 0u; step < LUMINA_SURFACE_LINE_SLIDE_STEPS; ++step) {
+    for (uint step = 0u; step < steps; ++step) {
         if (sliding) {
             float3 p = origin + slid * along;
-            float free = sdfSampleGlobal(p) - marginVoxels * sdfGlobalVoxelSizeAt(p);
+            float margin = marginVoxels * sdfGlobalVoxelSizeAt(p);
+            float free = sdfSampleGlobal(p) - margin;
+            if (raised) {
+                float freeAbove = sdfSampleGlobal(p + height * n) - margin;
+                free = max(free, freeAbove > height ? sqrt(freeAbove * freeAbove - height * height) : 0.0f);
+            }
             sliding = free > 0.0f;
             slid = sliding ? min(slid + free, wanted) : slid;
             sliding = sliding && slid < wanted;
         }
     }
     return origin + slid * along;
+}
+
+float3 surfaceLineStart(float3 origin, float3 surfacePoint, float3 n, float3 dir, float cosTheta,
+                        float marginVoxels) {
+    return surfaceLineSlide(origin, surfacePoint, n, dir, cosTheta, marginVoxels,
+                            LUMINA_SURFACE_LINE_SLIDE_STEPS, false);
+}
+
+float3 surfaceLineStartRaised(float3 origin, float3 surfacePoint, float3 n, float3 dir, float cosTheta,
+                              float marginVoxels) {
+    return surfaceLineSlide(origin, surfacePoint, n, dir, cosTheta, marginVoxels,
+                            LUMINA_SURFACE_LINE_RAISED_SLIDE_STEPS, true);
 }
 
 #endif

@@ -343,8 +343,9 @@ void considerProbeSlot(uint2 probe, uint slot, uint sameCard, inout ProbeTexelCh
         float3 dir = normalize(sinTheta * cos(phi) * t1 + sinTheta * sin(phi) * t2 + cosTheta * n);
         rayDirection[ray] = dir;
         rayCosTheta[ray] = cosTheta;
-        rayStart[ray] = surfaceLineStart(origin, world, n, dir, cosTheta,
-                                         LUMINA_RADIOSITY_SLIDE_MARGIN * LUMINA_RADIOSITY_CLEARANCE_VOXELS);
+        rayStart[ray] =
+            surfaceLineStartRaised(origin, world, n, dir, cosTheta,
+                                   LUMINA_RADIOSITY_SLIDE_MARGIN * LUMINA_RADIOSITY_CLEARANCE_VOXELS);
     }
     float rayEndT[LUMINA_RADIOSITY_RAYS];
     uint rayEnd[LUMINA_RADIOSITY_RAYS]; // status | steps << 8
