@@ -16,6 +16,10 @@
 # Vulkan build needs too; it also runs .ci/install-dxbc-tools.sh). ccache is used when installed
 # (LUMINA_CCACHE=0: not).
 #
+# Kernels are the Linux build's ($LUMINA_LINUX_BUILD_DIR, default build/), brought up to date
+# first, where that build exists and compiles DXBC: the same files, and three CPU-minutes saved
+# (cmake/LuminaShaders.cmake, LUMINA_PREBUILT_KERNELS_DIR). Otherwise this build compiles its own.
+#
 #   .ci/build-d3d12-mingw.sh              # build-mingw/ beside the sources
 #   LUMINA_MINGW_BUILD_DIR=/tmp/b JOBS=2 .ci/build-d3d12-mingw.sh
 #   .ci/build-d3d12-mingw.sh --gtest_filter='*Buffer*'   # extra arguments go to the tests
@@ -59,11 +63,20 @@ if [ "${LUMINA_CCACHE:-1}" != 0 ] && command -v ccache >/dev/null 2>&1; then
     launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
 fi
 
+linux_build=${LUMINA_LINUX_BUILD_DIR:-$root/build}
+kernels=$build/shaders
+if [ -f "$linux_build/build.ninja" ] && [ -f "$linux_build/shaders/rhi_tests/chain_seed.dxbc" ]; then
+    echo "== kernels: the Linux build's ($linux_build/shaders), brought up to date"
+    cmake --build "$linux_build" --target lumina_kernels
+    kernels=$linux_build/shaders
+fi
+
 echo "== configure ($build)"
 cmake -S "$root" -B "$build" -G Ninja \
     -DCMAKE_TOOLCHAIN_FILE="$root/cmake/toolchains/mingw-w64.cmake" \
     -DCMAKE_BUILD_TYPE=Release \
     -DLUMINA_D3D12=ON -DLUMINA_VULKAN=OFF -DLUMINA_WERROR=ON -DLUMINA_TESTS=ON \
+    -DLUMINA_PREBUILT_KERNELS_DIR="$([ "$kernels" = "$build/shaders" ] || echo "$kernels")" \
     -DLUMINA_DEBIAN_SOURCES_DIR="$debian_sources" "${launcher[@]}"
 echo "== build (everything)"
 cmake --build "$build" -j "$jobs"
@@ -74,7 +87,7 @@ for exe in app/lumina.exe app/viewer/lumina-viewer.exe tests/rhi/rhi_conformance
 done
 echo "== built: $(find "$build" -name '*.exe' -not -path '*/CMakeFiles/*' | wc -l) Windows executables"
 built=$(date +%s)
-[ -f "$build/shaders/rhi_tests/chain_seed.dxbc" ] ||
+[ -f "$kernels/rhi_tests/chain_seed.dxbc" ] ||
     fail "the build made no DXBC kernels (configure did not find $tools/bin/vkd3d-compiler)"
 
 # A throw-away Wine prefix: nothing from earlier runs, no Mono or Gecko installers.
@@ -96,7 +109,7 @@ run_wine() {
 # virtual_heaps: vkd3d's other descriptor-heap model works too, but each kernel test then took
 # 5 to 20 s instead of under 1 s. The kernels: the DXBC beside the build (Wine maps Z: to /).
 export VK_ICD_FILENAMES=$tools/lvp_icd.json VKD3D_CONFIG=virtual_heaps
-export LUMINA_SHADER_DIR="Z:$build/shaders"
+export LUMINA_SHADER_DIR="Z:$kernels"
 
 echo "== wine: lumina.exe"
 run_wine "$build/app/lumina.exe" --version
@@ -252,7 +265,7 @@ echo "== GI tests on D3D12 under Wine: $(grep -c '^\[       OK \]' "$gi_log" || 
 # draw and dispatch from DXBC, against the Vulkan build's frame of the same scene. Both are
 # deterministic (no temporal noise in the direct technique), so they must agree to rounding.
 # Then the lumen frame (every GI pass from DXBC) against Vulkan's.
-linux_lumina=${LUMINA_LINUX_BUILD_DIR:-$root/build}/app/lumina
+linux_lumina=$linux_build/app/lumina
 if [ ! -x "$linux_lumina" ]; then
     echo "== skipped: the D3D12 frame against Vulkan needs the Linux build's lumina ($linux_lumina;" \
         "set LUMINA_LINUX_BUILD_DIR)"

@@ -25,7 +25,21 @@
 # its vsMain entry -> "rhi_tests/fill.vsMain". Outputs land in ${LUMINA_SHADER_OUTPUT_DIR}
 # as <name>.spv, <name>.dxil and <name>.dxbc, where the runtime loads them by name.
 
-set(LUMINA_SHADER_OUTPUT_DIR ${CMAKE_BINARY_DIR}/shaders CACHE INTERNAL "compiled kernels")
+#
+# -DLUMINA_PREBUILT_KERNELS_DIR=<another build's shaders folder> compiles no kernel and loads that
+# folder's instead: kernels are the same whatever compiler builds the C++, so CI's sanitizer and
+# MinGW builds take the Linux build's (about three CPU-minutes of glslang and vkd3d-compiler each
+# on a 2-core machine). The folder must come from the same sources; CI brings it up to date first.
+set(LUMINA_PREBUILT_KERNELS_DIR "" CACHE PATH "Load the kernels of another build of the same sources (empty: compile them)")
+if(LUMINA_PREBUILT_KERNELS_DIR)
+  if(NOT EXISTS "${LUMINA_PREBUILT_KERNELS_DIR}/rhi_tests/chain_seed.spv")
+    message(FATAL_ERROR "LUMINA_PREBUILT_KERNELS_DIR=${LUMINA_PREBUILT_KERNELS_DIR} holds no compiled"
+      " kernels (no rhi_tests/chain_seed.spv): build lumina_kernels there first, or leave it empty")
+  endif()
+  set(LUMINA_SHADER_OUTPUT_DIR ${LUMINA_PREBUILT_KERNELS_DIR} CACHE INTERNAL "compiled kernels")
+else()
+  set(LUMINA_SHADER_OUTPUT_DIR ${CMAKE_BINARY_DIR}/shaders CACHE INTERNAL "compiled kernels")
+endif()
 set(_LUMINA_SHADERS_DIR ${CMAKE_CURRENT_LIST_DIR})
 
 find_program(LUMINA_DXC NAMES dxc dxc.exe
@@ -73,8 +87,10 @@ if(LUMINA_DXBC_COMPILER)
 else()
   set(_lumina_dxbc_status "none (.ci/install-dxbc-tools.sh)")
 endif()
-message(STATUS "Lumina kernels: SPIR-V with ${LUMINA_DXC}${LUMINA_GLSLANG}, DXIL ${LUMINA_DXC},"
-  " DXBC ${_lumina_dxbc_status}")
+if(NOT LUMINA_PREBUILT_KERNELS_DIR)
+  message(STATUS "Lumina kernels: SPIR-V with ${LUMINA_DXC}${LUMINA_GLSLANG}, DXIL ${LUMINA_DXC},"
+    " DXBC ${_lumina_dxbc_status}")
+endif()
 
 # Register shifts shared by both SPIR-V compilers (docs/binding.md): b -> n, t -> 100+n,
 # u -> 200+n, s -> 300+n, in every register space (space N becomes descriptor set N).
@@ -125,6 +141,11 @@ endfunction()
 # lumina_add_kernels(TARGET <custom target> ROOT <shaders dir>)
 function(lumina_add_kernels)
   cmake_parse_arguments(ARG "" "TARGET;ROOT" "" ${ARGN})
+  if(LUMINA_PREBUILT_KERNELS_DIR)
+    message(STATUS "Lumina kernels: compiled by another build, loaded from ${LUMINA_PREBUILT_KERNELS_DIR}")
+    add_custom_target(${ARG_TARGET})
+    return()
+  endif()
   file(GLOB_RECURSE sources CONFIGURE_DEPENDS "${ARG_ROOT}/*.hlsl")
   set(outputs "")
   foreach(src IN LISTS sources)
