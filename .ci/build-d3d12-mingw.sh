@@ -111,6 +111,13 @@ run_wine() {
 export VK_ICD_FILENAMES=$tools/lvp_icd.json VKD3D_CONFIG=virtual_heaps
 export LUMINA_SHADER_DIR="Z:$kernels"
 
+# The prefix is made by the first program Wine starts; once (of many runs) that first program
+# exited 1 after its output, as the virtual display closed under the prefix's setup. So the
+# prefix is set up first, on its own, and waited for (wineserver -w) before the display closes.
+echo "== wine: prefix"
+"$root/scripts/with_virtual_display.sh" sh -c '"$1" wineboot --init && "$2" -w' wineboot "$wine" \
+    "$(dirname "$wine")/wineserver" || echo "(wineboot --init exited $?; the first run sets the prefix up)"
+
 echo "== wine: lumina.exe"
 run_wine "$build/app/lumina.exe" --version
 run_wine "$build/app/lumina.exe" --help
