@@ -33,7 +33,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <limits>
 #include <map>
-#include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -361,18 +361,21 @@ void testDdgi(gi::DdgiSettings& s) {
     s.cache.atlasSize = kAtlasSize;
 }
 
+// The clean run of one test, made only when a compared frame is not kept yet (cleanState).
+struct CleanRun {
+    std::optional<FrameHarness> harness;
+    uint32_t rendered = 0; // frames since the start
+};
+
 class PoisonStress : public GpuTest {
 protected:
-    std::unique_ptr<FrameHarness> harness(const scene::Scene& scene, gi::GiTechnique technique,
-                                          bool checkFinite) {
-        return std::make_unique<FrameHarness>(
-            device(), shaders(), scene,
-            FrameHarnessSettings{.width = kSize,
-                                 .height = kSize,
-                                 .technique = technique,
-                                 .adjustDdgi = testDdgi,
-                                 .adjustLumen = [](gi::LumenSettings& s) { s.cache.atlasSize = kAtlasSize; },
-                                 .checkFinite = checkFinite});
+    static FrameHarnessSettings settings(gi::GiTechnique technique, bool checkFinite) {
+        return {.width = kSize,
+                .height = kSize,
+                .technique = technique,
+                .adjustDdgi = testDdgi,
+                .adjustLumen = [](gi::LumenSettings& s) { s.cache.atlasSize = kAtlasSize; },
+                .checkFinite = checkFinite};
     }
 
     static FrameState readState(rhi::IDevice& device, gi::GiTechnique technique, FrameHarness& h) {
@@ -382,35 +385,31 @@ protected:
     // The clean run's state after `frame` frames. The clean run is the same computation in every
     // test of a technique (the runs are deterministic: a refused poison leaves the poisoned run
     // identical to it), so the first test to ask renders it and keeps each compared frame's state,
-    // and the others read them: a third of the test's frames on lavapipe. `clean` is this test's
-    // run, made when a frame is not kept yet; `rendered` counts its frames.
+    // and the others read them: a third of the test's frames on lavapipe.
     const FrameState& cleanState(const scene::Scene& scene, gi::GiTechnique technique, uint32_t frame,
-                                 std::unique_ptr<FrameHarness>& clean, uint32_t& rendered) {
+                                 CleanRun& clean) {
         static std::map<std::tuple<rhi::Api, gi::GiTechnique, uint32_t>, FrameState> kept;
         const auto key = std::make_tuple(GetParam(), technique, frame);
         if (const auto it = kept.find(key); it != kept.end()) {
             return it->second;
         }
-        if (!clean) {
-            clean = harness(scene, technique, false);
-            rendered = 0;
+        if (!clean.harness) {
+            clean.harness.emplace(device(), shaders(), scene, settings(technique, false));
         }
-        if (frame < rendered) {
+        if (frame < clean.rendered) {
             throw std::logic_error("the clean run was asked for a frame it has passed");
         }
-        clean->render(frame - rendered);
-        rendered = frame;
-        return kept.emplace(key, readState(device(), technique, *clean)).first->second;
+        clean.harness->render(frame - clean.rendered);
+        clean.rendered = frame;
+        return kept.emplace(key, readState(device(), technique, *clean.harness)).first->second;
     }
 
     // Poisons `site` with every value in turn, one frame each, and checks the spread.
     void runSite(const PoisonSite& site, gi::GiTechnique technique = gi::GiTechnique::Lumen) {
         const scene::Scene scene = poisonScene();
         const std::vector<Compared>& watch = compared(technique);
-        std::unique_ptr<FrameHarness> clean;
-        uint32_t cleanRendered = 0;
-        std::unique_ptr<FrameHarness> poisonedHarness = harness(scene, technique, true);
-        FrameHarness& poisonedRun = *poisonedHarness;
+        CleanRun clean;
+        FrameHarness poisonedRun(device(), shaders(), scene, settings(technique, true));
         gi::watchFloatBuffers(*poisonedRun.finiteCheck(), poisonedRun.renderer());
         poisonedRun.render(kWarmFrames);
         uint32_t frames = kWarmFrames; // since the start, both runs
@@ -444,7 +443,7 @@ protected:
                 if (!refused && !comparedFrame(frame)) {
                     continue;
                 }
-                last = errors(technique, cleanState(scene, technique, frames, clean, cleanRendered),
+                last = errors(technique, cleanState(scene, technique, frames, clean),
                               readState(device(), technique, poisonedRun));
                 if (frame == 1) {
                     first = last;
