@@ -64,19 +64,20 @@ if [ "${LUMINA_CCACHE:-1}" != 0 ] && command -v ccache >/dev/null 2>&1; then
 fi
 
 linux_build=${LUMINA_LINUX_BUILD_DIR:-$root/build}
-kernels=$build/shaders
+prebuilt=
 if [ -f "$linux_build/build.ninja" ] && [ -f "$linux_build/shaders/rhi_tests/chain_seed.dxbc" ]; then
     echo "== kernels: the Linux build's ($linux_build/shaders), brought up to date"
     cmake --build "$linux_build" --target lumina_kernels
-    kernels=$linux_build/shaders
+    prebuilt=$linux_build/shaders
 fi
+kernels=${prebuilt:-$build/shaders}
 
 echo "== configure ($build)"
 cmake -S "$root" -B "$build" -G Ninja \
     -DCMAKE_TOOLCHAIN_FILE="$root/cmake/toolchains/mingw-w64.cmake" \
     -DCMAKE_BUILD_TYPE=Release \
     -DLUMINA_D3D12=ON -DLUMINA_VULKAN=OFF -DLUMINA_WERROR=ON -DLUMINA_TESTS=ON \
-    -DLUMINA_PREBUILT_KERNELS_DIR="$([ "$kernels" = "$build/shaders" ] || echo "$kernels")" \
+    -DLUMINA_PREBUILT_KERNELS_DIR="$prebuilt" \
     -DLUMINA_DEBIAN_SOURCES_DIR="$debian_sources" "${launcher[@]}"
 echo "== build (everything)"
 cmake --build "$build" -j "$jobs"
