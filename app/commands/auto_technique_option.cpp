@@ -17,7 +17,7 @@ namespace lumina::app {
 
 namespace {
 
-std::string number(double value) {
+std::string shortNumber(double value) {
     char text[32];
     std::snprintf(text, sizeof(text), "%.4g", value);
     return text;
@@ -116,7 +116,7 @@ void printCalibration(const gi::Calibration& calibration, const gi::CalibrationR
     for (size_t i = 0; i < calibration.candidates.size(); ++i) {
         const gi::AutoCandidate& c = calibration.candidates[i];
         std::printf("  %-10s %-8s %14s %12s  %s%s\n", c.technique.c_str(), c.preset.c_str(),
-                    number(c.frameMs).c_str(), number(c.relMse).c_str(),
+                    shortNumber(c.frameMs).c_str(), shortNumber(c.relMse).c_str(),
                     c.relMse <= budget ? "under the budget" : "over", choice == i ? ", chosen" : "");
     }
     std::fflush(stdout);
@@ -124,13 +124,13 @@ void printCalibration(const gi::Calibration& calibration, const gi::CalibrationR
         return;
     }
     const gi::AutoCandidate& chosen = calibration.candidates[*choice];
-    std::cout << "auto: chose " << name(chosen) << ": relMSE " << number(chosen.relMse)
-              << " <= " << number(budget) << " at " << number(chosen.frameMs)
+    std::cout << "auto: chose " << name(chosen) << ": relMSE " << shortNumber(chosen.relMse)
+              << " <= " << shortNumber(budget) << " at " << shortNumber(chosen.frameMs)
               << " GPU ms per frame, the cheapest under the budget";
     std::vector<std::string> cheaper;
     for (const gi::AutoCandidate& c : calibration.candidates) {
         if (c.frameMs < chosen.frameMs) {
-            cheaper.push_back(name(c) + " (relMSE " + number(c.relMse) + ")");
+            cheaper.push_back(name(c) + " (relMSE " + shortNumber(c.relMse) + ")");
         }
     }
     if (!cheaper.empty()) {
@@ -169,9 +169,9 @@ ParsedArgs chooseAutoTechnique(const ParsedArgs& args) {
     printCalibration(calibration, request, budget, choice);
     if (!choice) {
         const auto best = std::ranges::min_element(calibration.candidates, {}, &gi::AutoCandidate::relMse);
-        throw std::runtime_error("auto: no candidate has relMSE <= " + number(budget) +
-                                 "; the most accurate is " + name(*best) + " at " + number(best->relMse) +
-                                 " (raise --error-budget)");
+        throw std::runtime_error("auto: no candidate has relMSE <= " + shortNumber(budget) +
+                                 "; the most accurate is " + name(*best) + " at " +
+                                 shortNumber(best->relMse) + " (raise --error-budget)");
     }
     ParsedArgs chosen = args;
     chosen.set("technique", calibration.candidates[*choice].technique);

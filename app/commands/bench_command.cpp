@@ -70,7 +70,7 @@ bool contains(const std::vector<std::string>& list, const std::string& item) {
     return std::ranges::find(list, item) != list.end();
 }
 
-std::string number(double value, int digits = 4) {
+std::string figureText(double value, int digits = 4) {
     char text[64];
     std::snprintf(text, sizeof text, "%.*g", digits, value);
     return text;
@@ -83,16 +83,16 @@ void printRun(const std::string& scene, const gi::TechniqueRun& run) {
     if (run.samplesPerFrame) {
         std::cout << " (" << run.samplesPerFrame << " spp/frame)";
     }
-    std::cout << ": " << number(run.frameMs) << " ms/frame, relMSE " << number(first.relMse) << " -> "
-              << number(last.relMse) << " (frame " << run.framesToConverge << "), indirect relMSE "
-              << number(last.indirectRelMse) << ", FLIP " << number(last.flip) << ", "
-              << number(double(run.gpuMemoryBytes) / (1024.0 * 1024.0), 3) << " MiB";
+    std::cout << ": " << figureText(run.frameMs) << " ms/frame, relMSE " << figureText(first.relMse) << " -> "
+              << figureText(last.relMse) << " (frame " << run.framesToConverge << "), indirect relMSE "
+              << figureText(last.indirectRelMse) << ", FLIP " << figureText(last.flip) << ", "
+              << figureText(double(run.gpuMemoryBytes) / (1024.0 * 1024.0), 3) << " MiB";
     if (!run.settledAfterFrame) {
         std::cout << ", not settled";
     } else if (*run.settledAfterFrame > 1) {
         std::cout << ", settled after frame " << *run.settledAfterFrame;
         if (run.settledFrameMs) {
-            std::cout << " (then " << number(*run.settledFrameMs) << " ms/frame)";
+            std::cout << " (then " << figureText(*run.settledFrameMs) << " ms/frame)";
         }
     }
     std::cout << '\n';
@@ -100,16 +100,17 @@ void printRun(const std::string& scene, const gi::TechniqueRun& run) {
 
 void printChangeResponse(const gi::ChangeResponse& r) {
     std::cout << "  " << r.scene << " / " << r.technique << " / " << r.preset << ": after " << r.changeFrames
-              << " frames of change, relMSE " << number(r.relMseAtStop)
-              << " against a fresh converged render (" << number(r.changedRegionRelMseAtStop) << " over the "
-              << number(100.0 * r.changedRegionFraction, 3) << "% of pixels the change touched); ";
+              << " frames of change, relMSE " << figureText(r.relMseAtStop)
+              << " against a fresh converged render (" << figureText(r.changedRegionRelMseAtStop)
+              << " over the " << figureText(100.0 * r.changedRegionFraction, 3)
+              << "% of pixels the change touched); ";
     if (r.framesToRecover) {
         std::cout << "within 0.01 after " << *r.framesToRecover << " frame(s) held still ("
-                  << number(r.msToRecover) << " GPU ms)";
+                  << figureText(r.msToRecover) << " GPU ms)";
     } else {
         std::cout << "not within 0.01 in " << r.relMseAfter.size() << "+ checkpoints";
     }
-    std::cout << "; frame " << number(r.movingFrameMs) << " ms moving, " << number(r.staticFrameMs)
+    std::cout << "; frame " << figureText(r.movingFrameMs) << " ms moving, " << figureText(r.staticFrameMs)
               << " ms static\n";
 }
 
@@ -120,14 +121,14 @@ void printSkipCheck(const gi::SkipCheck& c) {
         std::cout << "nothing to run, cannot be forced\n";
         return;
     }
-    std::cout << "saves " << number(c.savedMs()) << " ms a frame (" << number(c.frameMs) << " -> "
-              << number(c.forcedFrameMs) << " forced"
+    std::cout << "saves " << figureText(c.savedMs()) << " ms a frame (" << figureText(c.frameMs) << " -> "
+              << figureText(c.forcedFrameMs) << " forced"
               << (c.framesSkippedForced
                       ? ", still skipped in " + std::to_string(c.framesSkippedForced) + " forced frame(s)"
                       : std::string())
-              << "), image relMSE " << number(c.imageRelMse)
+              << "), image relMSE " << figureText(c.imageRelMse)
               << " without it: " << (c.withinTolerance() ? "within " : "OVER ")
-              << number(gi::kSkipImageTolerance) << '\n';
+              << figureText(gi::kSkipImageTolerance) << '\n';
 }
 
 int runBench(const ParsedArgs& args) {
@@ -251,7 +252,7 @@ int runBench(const ParsedArgs& args) {
                 }
             });
         std::cout << "  reference " << scene.name << ": " << (reference.reused ? "reused " : "rendered ")
-                  << reference.path.string() << " (" << number(reference.seconds, 3) << " s)\n";
+                  << reference.path.string() << " (" << figureText(reference.seconds, 3) << " s)\n";
 
         const gi::RunRequest run{.width = width, .height = height, .frames = frames, .seed = kPathTracerSeed};
         std::map<std::string, std::vector<double>> realTimeFrameMs;
@@ -292,13 +293,14 @@ int runBench(const ParsedArgs& args) {
             const double msPerSample = gi::pathTracerMsPerSample(*device, pipelines, scene, width, height);
             const gi::TimeBase base = equalTimeBase(realTimeFrameMs, msPerSample);
             std::cout << "  " << scene.name << " / pathtracer: budgets in multiples of " << base.technique
-                      << " (" << number(base.ms) << " ms), " << number(msPerSample) << " ms per sample\n";
+                      << " (" << figureText(base.ms) << " ms), " << figureText(msPerSample)
+                      << " ms per sample\n";
             for (size_t b = 0; b < budgets.size(); ++b) {
                 const double budget = budgets[b];
                 gi::RunRequest ptRun = run;
                 ptRun.samplesPerFrame =
                     uint32_t(std::clamp(std::floor(budget * base.ms / msPerSample), 1.0, 65536.0));
-                const std::string preset = number(budget, 3) + "x-time";
+                const std::string preset = figureText(budget, 3) + "x-time";
                 records.push_back(
                     {scene.name, gi::runPathTracer(*device, pipelines, scene, preset, ptRun, reference),
                      reference.path.string(), gi::TimeBudget{.multiple = budget, .base = base}});
@@ -366,7 +368,7 @@ int runBench(const ParsedArgs& args) {
         std::ranges::count_if(skipChecks, [](const gi::SkipCheck& c) { return !c.withinTolerance(); });
     if (changing != 0) {
         std::cerr << "bench: " << changing << " skip(s) change the image by more than relMSE "
-                  << number(gi::kSkipImageTolerance) << " (DIR/skips.csv)\n";
+                  << figureText(gi::kSkipImageTolerance) << " (DIR/skips.csv)\n";
         return 1;
     }
     uint64_t nonFinite = 0;

@@ -16,7 +16,7 @@ namespace lumina::app {
 
 namespace {
 
-std::string number(double value, int digits = 6) {
+std::string metricText(double value, int digits = 6) {
     char text[64];
     std::snprintf(text, sizeof text, "%.*g", digits, value);
     return text;
@@ -49,7 +49,7 @@ std::string meanRgb(const image::Image& image) {
         }
     }
     const double n = double(count == 0 ? 1 : count);
-    return "(" + number(sum[0] / n) + ", " + number(sum[1] / n) + ", " + number(sum[2] / n) + ")";
+    return "(" + metricText(sum[0] / n) + ", " + metricText(sum[1] / n) + ", " + metricText(sum[2] / n) + ")";
 }
 
 void printReport(const std::string& refPath, const std::string& testPath, const image::Image& reference,
@@ -58,19 +58,20 @@ void printReport(const std::string& refPath, const std::string& testPath, const 
     std::ostringstream out;
     out << "compare: " << refPath << " (reference) vs " << testPath << ", " << result.width << "x"
         << result.height << ", " << result.linear.pixels << " pixels compared\n";
-    out << "  relMSE     " << number(result.linear.relMse) << "   linear radiance, mean (x-r)^2/(r^2+0.01)\n";
-    out << "  RMSE       " << number(result.linear.rmse) << "   linear radiance\n";
+    out << "  relMSE     " << metricText(result.linear.relMse)
+        << "   linear radiance, mean (x-r)^2/(r^2+0.01)\n";
+    out << "  RMSE       " << metricText(result.linear.rmse) << "   linear radiance\n";
     out << "  mean       reference " << meanRgb(reference) << ", test " << meanRgb(test)
         << "   linear R, G, B over finite pixels\n";
     out << "  PSNR       "
-        << (std::isfinite(result.psnr) ? number(result.psnr, 5) + " dB" : std::string("inf dB"))
+        << (std::isfinite(result.psnr) ? metricText(result.psnr, 5) + " dB" : std::string("inf dB"))
         << "   tonemapped sRGB, peak 1\n";
-    out << "  max error  relMSE " << number(result.linear.maxRelMse.value) << " at ("
+    out << "  max error  relMSE " << metricText(result.linear.maxRelMse.value) << " at ("
         << result.linear.maxRelMse.x << ", " << result.linear.maxRelMse.y << ")\n";
-    out << "  FLIP       mean " << number(result.flip.mean) << ", max " << number(result.flip.max) << " at ("
-        << result.flip.maxX << ", " << result.flip.maxY << ")   LDR-FLIP, "
-        << number(options.flip.pixelsPerDegree, 4) << " ppd, exposure "
-        << number(options.display.exposureEv, 4) << " EV\n";
+    out << "  FLIP       mean " << metricText(result.flip.mean) << ", max " << metricText(result.flip.max)
+        << " at (" << result.flip.maxX << ", " << result.flip.maxY << ")   LDR-FLIP, "
+        << metricText(options.flip.pixelsPerDegree, 4) << " ppd, exposure "
+        << metricText(options.display.exposureEv, 4) << " EV\n";
     out << "  NaN/Inf    reference " << counts(result.reference) << ", test " << counts(result.test) << '\n';
     std::cout << out.str();
 }

@@ -8,6 +8,7 @@ set(GLFW_BUILD_TESTS OFF CACHE BOOL "" FORCE)
 set(GLFW_BUILD_DOCS OFF CACHE BOOL "" FORCE)
 set(GLFW_INSTALL OFF CACHE BOOL "" FORCE)
 set(BUILD_SHARED_LIBS OFF)
+set(CMAKE_UNITY_BUILD OFF) # foreign code, built as its authors build it (restored at the end)
 add_subdirectory(${LUMINA_DEBIAN_SOURCES_DIR}/glfw3 ${CMAKE_BINARY_DIR}/debian-sources/glfw3 EXCLUDE_FROM_ALL)
 # glfw's include directory as SYSTEM for its users.
 get_target_property(glfw_includes glfw INTERFACE_INCLUDE_DIRECTORIES)
@@ -20,3 +21,4 @@ add_library(lumina_imgui STATIC
 target_include_directories(lumina_imgui SYSTEM PUBLIC ${imgui_dir})
 target_link_libraries(lumina_imgui PUBLIC glfw PRIVATE imm32)
 add_library(imgui::imgui ALIAS lumina_imgui)
+set(CMAKE_UNITY_BUILD ${LUMINA_UNITY_BUILD})

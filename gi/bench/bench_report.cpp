@@ -12,7 +12,7 @@ namespace lumina::gi {
 
 namespace {
 
-std::ofstream openForWriting(const std::filesystem::path& path) {
+std::ofstream openReportFile(const std::filesystem::path& path) {
     std::ofstream out(path);
     if (!out) {
         throw std::runtime_error("cannot write '" + path.string() + "'");
@@ -92,7 +92,7 @@ std::string utcTimestamp() {
 
 void writeBenchCsv(const std::filesystem::path& path, const BenchContext& context,
                    const std::vector<BenchRecord>& records) {
-    std::ofstream out = openForWriting(path);
+    std::ofstream out = openReportFile(path);
     out << "scene,technique,preset,width,height,frames,spp_per_frame,frame_ms,settled_frame_ms,"
            "settled_after_frame,relmse_frame1,relmse_converged,indirect_relmse_frame1,indirect_relmse_"
            "converged,flip_converged,frames_to_converge,gpu_memory_mib,non_finite_pixels,reference_spp,"
@@ -153,7 +153,7 @@ void writeBenchJson(const std::filesystem::path& path, const BenchContext& conte
         }
         json["runs"].push_back(std::move(entry));
     }
-    std::ofstream out = openForWriting(path);
+    std::ofstream out = openReportFile(path);
     out << json.dump(2) << '\n';
 }
 

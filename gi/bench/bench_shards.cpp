@@ -51,7 +51,7 @@ nlohmann::ordered_json readJson(const std::filesystem::path& path) {
     }
 }
 
-std::ofstream openForWriting(const std::filesystem::path& path) {
+std::ofstream openShardOutput(const std::filesystem::path& path) {
     std::ofstream out(path);
     if (!out) {
         throw std::runtime_error("cannot write '" + path.string() + "'");
@@ -121,7 +121,7 @@ void writeBenchShardManifest(const std::filesystem::path& directory, const Bench
                                          {"total_rows", manifest.totalRows},
                                          {"rows", manifest.rows},
                                          {"change_rows", manifest.changeRows}};
-    std::ofstream out = openForWriting(directory / kManifestName);
+    std::ofstream out = openShardOutput(directory / kManifestName);
     out << json.dump(2) << '\n';
 }
 
@@ -203,17 +203,17 @@ BenchMergeSummary mergeBenchShards(const std::vector<std::filesystem::path>& dir
     }
 
     std::filesystem::create_directories(out);
-    std::ofstream csv = openForWriting(out / "bench.csv");
+    std::ofstream csv = openShardOutput(out / "bench.csv");
     csv << shards.front().csv.front() << '\n';
     json["runs"] = nlohmann::ordered_json::array();
     for (size_t row = 0; row < total; ++row) {
         csv << owner[row]->csv[position[row] + 1] << '\n';
         json["runs"].push_back(owner[row]->json.at("runs").at(position[row]));
     }
-    std::ofstream jsonOut = openForWriting(out / "bench.json");
+    std::ofstream jsonOut = openShardOutput(out / "bench.json");
     jsonOut << json.dump(2) << '\n';
     if (!changeLines.empty()) {
-        std::ofstream change = openForWriting(out / "change_response.csv");
+        std::ofstream change = openShardOutput(out / "change_response.csv");
         change << changeHeader << '\n';
         for (const auto& [row, line] : changeLines) {
             change << line << '\n';

@@ -90,6 +90,25 @@ const SceneGoal kSceneGoals[] = {
     // ceiling hold no texel with clearance, and their probes were pushed up through it to read the
     // sky and the sunlit roof (0.662, 1.185; docs/gi.md, energy 18.).
     {.scene = "sunlit_rooms", .relMseFraction = 0.05, .meanTolerance = 0.03, .preset = "high"},
+    // The other built-in scenes (their references made on the lent GPU by
+    // scripts/gpu/stored_references.sh). Issue 26 asks the mean within 3 % of each; the relMSE
+    // bound is the figure measured on lavapipe with a margin, so that a change that loses accuracy
+    // fails. Measured (relMSE / direct-only's, mean ratio):
+    // 0.034, 1.012: the Cornell box with its block as an instance of its own (the moving box at
+    // its first pose; the same reference, stored_reference.h).
+    {.scene = "cornell_box_moving", .relMseFraction = 0.05, .meanTolerance = 0.03},
+    // 0.052, 0.993.
+    {.scene = "two_cylinder_engine", .relMseFraction = 0.06, .meanTolerance = 0.03},
+    // 0.105, 0.987.
+    {.scene = "atrium_day", .relMseFraction = 0.12, .meanTolerance = 0.03},
+    // 0.191, 1.011 (on the H200 at 256^2, 1.027: docs/gi.md says why the image size matters).
+    {.scene = "atrium", .relMseFraction = 0.21, .meanTolerance = 0.03},
+    // city (label long: at 128^2 each preset renders for over 10 minutes on lavapipe) at medium
+    // and low. On the H200 at 128^2: relMSE 2.19 and 2.16 times direct-only's, means 1.018 and
+    // 1.006; its error lies where the sun's shadow map misses the windows' recesses (docs/gi.md,
+    // energy 30.).
+    {.scene = "city", .relMseFraction = 2.5, .meanTolerance = 0.03},
+    {.scene = "city", .relMseFraction = 2.5, .meanTolerance = 0.03, .preset = "low"},
 };
 
 INSTANTIATE_TEST_SUITE_P(Scenes, FrameVsStoredReferenceGpu,

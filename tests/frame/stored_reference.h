@@ -12,7 +12,9 @@ namespace lumina::test {
 
 inline constexpr uint32_t kStoredReferenceSize = 128;
 
-// tests/frame/data/<scene>_128x128.exr
+// tests/frame/data/<scene>_128x128.exr, or the reference of the scene whose image `scene` shares:
+// cornell_box_moving, held at its first pose, is cornell_box (the path tracer renders both to the
+// same bits).
 std::filesystem::path storedReferencePath(const std::string& scene);
 
 struct StoredReferenceFigures {
