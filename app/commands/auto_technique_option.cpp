@@ -1,6 +1,7 @@
 #include "app/commands/auto_technique_option.h"
 
 #include "app/command.h"
+#include "app/commands/number_text.h"
 #include "app/commands/scene_options.h"
 #include "gi/bench/reference_cache.h"
 #include "gi/frame/gi_technique.h"
@@ -16,12 +17,6 @@
 namespace lumina::app {
 
 namespace {
-
-std::string shortNumber(double value) {
-    char text[32];
-    std::snprintf(text, sizeof(text), "%.4g", value);
-    return text;
-}
 
 std::string name(const gi::AutoCandidate& c) {
     return c.technique + " " + c.preset;
@@ -116,7 +111,7 @@ void printCalibration(const gi::Calibration& calibration, const gi::CalibrationR
     for (size_t i = 0; i < calibration.candidates.size(); ++i) {
         const gi::AutoCandidate& c = calibration.candidates[i];
         std::printf("  %-10s %-8s %14s %12s  %s%s\n", c.technique.c_str(), c.preset.c_str(),
-                    shortNumber(c.frameMs).c_str(), shortNumber(c.relMse).c_str(),
+                    numberText(c.frameMs, 4).c_str(), numberText(c.relMse, 4).c_str(),
                     c.relMse <= budget ? "under the budget" : "over", choice == i ? ", chosen" : "");
     }
     std::fflush(stdout);
@@ -124,13 +119,13 @@ void printCalibration(const gi::Calibration& calibration, const gi::CalibrationR
         return;
     }
     const gi::AutoCandidate& chosen = calibration.candidates[*choice];
-    std::cout << "auto: chose " << name(chosen) << ": relMSE " << shortNumber(chosen.relMse)
-              << " <= " << shortNumber(budget) << " at " << shortNumber(chosen.frameMs)
+    std::cout << "auto: chose " << name(chosen) << ": relMSE " << numberText(chosen.relMse, 4)
+              << " <= " << numberText(budget, 4) << " at " << numberText(chosen.frameMs, 4)
               << " GPU ms per frame, the cheapest under the budget";
     std::vector<std::string> cheaper;
     for (const gi::AutoCandidate& c : calibration.candidates) {
         if (c.frameMs < chosen.frameMs) {
-            cheaper.push_back(name(c) + " (relMSE " + shortNumber(c.relMse) + ")");
+            cheaper.push_back(name(c) + " (relMSE " + numberText(c.relMse, 4) + ")");
         }
     }
     if (!cheaper.empty()) {
@@ -169,9 +164,9 @@ ParsedArgs chooseAutoTechnique(const ParsedArgs& args) {
     printCalibration(calibration, request, budget, choice);
     if (!choice) {
         const auto best = std::ranges::min_element(calibration.candidates, {}, &gi::AutoCandidate::relMse);
-        throw std::runtime_error("auto: no candidate has relMSE <= " + shortNumber(budget) +
+        throw std::runtime_error("auto: no candidate has relMSE <= " + numberText(budget, 4) +
                                  "; the most accurate is " + name(*best) + " at " +
-                                 shortNumber(best->relMse) + " (raise --error-budget)");
+                                 numberText(best->relMse, 4) + " (raise --error-budget)");
     }
     ParsedArgs chosen = args;
     chosen.set("technique", calibration.candidates[*choice].technique);

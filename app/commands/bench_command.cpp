@@ -8,6 +8,7 @@
 #include "app/commands/auto_technique_option.h"
 #include "app/commands/bench_auto_check.h"
 #include "app/commands/bench_plot.h"
+#include "app/commands/number_text.h"
 #include "app/commands/scene_options.h"
 #include "app/commands/shard_option.h"
 #include "gi/bench/bench_matrix.h"
@@ -23,7 +24,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -70,12 +70,6 @@ bool contains(const std::vector<std::string>& list, const std::string& item) {
     return std::ranges::find(list, item) != list.end();
 }
 
-std::string figureText(double value, int digits = 4) {
-    char text[64];
-    std::snprintf(text, sizeof text, "%.*g", digits, value);
-    return text;
-}
-
 void printRun(const std::string& scene, const gi::TechniqueRun& run) {
     const gi::Checkpoint& first = run.checkpoints.front();
     const gi::Checkpoint& last = run.checkpoints.back();
@@ -83,16 +77,17 @@ void printRun(const std::string& scene, const gi::TechniqueRun& run) {
     if (run.samplesPerFrame) {
         std::cout << " (" << run.samplesPerFrame << " spp/frame)";
     }
-    std::cout << ": " << figureText(run.frameMs) << " ms/frame, relMSE " << figureText(first.relMse) << " -> "
-              << figureText(last.relMse) << " (frame " << run.framesToConverge << "), indirect relMSE "
-              << figureText(last.indirectRelMse) << ", FLIP " << figureText(last.flip) << ", "
-              << figureText(double(run.gpuMemoryBytes) / (1024.0 * 1024.0), 3) << " MiB";
+    std::cout << ": " << numberText(run.frameMs, 4) << " ms/frame, relMSE " << numberText(first.relMse, 4)
+              << " -> " << numberText(last.relMse, 4) << " (frame " << run.framesToConverge
+              << "), indirect relMSE " << numberText(last.indirectRelMse, 4) << ", FLIP "
+              << numberText(last.flip, 4) << ", "
+              << numberText(double(run.gpuMemoryBytes) / (1024.0 * 1024.0), 3) << " MiB";
     if (!run.settledAfterFrame) {
         std::cout << ", not settled";
     } else if (*run.settledAfterFrame > 1) {
         std::cout << ", settled after frame " << *run.settledAfterFrame;
         if (run.settledFrameMs) {
-            std::cout << " (then " << figureText(*run.settledFrameMs) << " ms/frame)";
+            std::cout << " (then " << numberText(*run.settledFrameMs, 4) << " ms/frame)";
         }
     }
     std::cout << '\n';
@@ -100,18 +95,18 @@ void printRun(const std::string& scene, const gi::TechniqueRun& run) {
 
 void printChangeResponse(const gi::ChangeResponse& r) {
     std::cout << "  " << r.scene << " / " << r.technique << " / " << r.preset << ": after " << r.changeFrames
-              << " frames of change, relMSE " << figureText(r.relMseAtStop)
-              << " against a fresh converged render (" << figureText(r.changedRegionRelMseAtStop)
-              << " over the " << figureText(100.0 * r.changedRegionFraction, 3)
+              << " frames of change, relMSE " << numberText(r.relMseAtStop, 4)
+              << " against a fresh converged render (" << numberText(r.changedRegionRelMseAtStop, 4)
+              << " over the " << numberText(100.0 * r.changedRegionFraction, 3)
               << "% of pixels the change touched); ";
     if (r.framesToRecover) {
         std::cout << "within 0.01 after " << *r.framesToRecover << " frame(s) held still ("
-                  << figureText(r.msToRecover) << " GPU ms)";
+                  << numberText(r.msToRecover, 4) << " GPU ms)";
     } else {
         std::cout << "not within 0.01 in " << r.relMseAfter.size() << "+ checkpoints";
     }
-    std::cout << "; frame " << figureText(r.movingFrameMs) << " ms moving, " << figureText(r.staticFrameMs)
-              << " ms static\n";
+    std::cout << "; frame " << numberText(r.movingFrameMs, 4) << " ms moving, "
+              << numberText(r.staticFrameMs, 4) << " ms static\n";
 }
 
 void printSkipCheck(const gi::SkipCheck& c) {
@@ -121,14 +116,14 @@ void printSkipCheck(const gi::SkipCheck& c) {
         std::cout << "nothing to run, cannot be forced\n";
         return;
     }
-    std::cout << "saves " << figureText(c.savedMs()) << " ms a frame (" << figureText(c.frameMs) << " -> "
-              << figureText(c.forcedFrameMs) << " forced"
+    std::cout << "saves " << numberText(c.savedMs(), 4) << " ms a frame (" << numberText(c.frameMs, 4)
+              << " -> " << numberText(c.forcedFrameMs, 4) << " forced"
               << (c.framesSkippedForced
                       ? ", still skipped in " + std::to_string(c.framesSkippedForced) + " forced frame(s)"
                       : std::string())
-              << "), image relMSE " << figureText(c.imageRelMse)
+              << "), image relMSE " << numberText(c.imageRelMse, 4)
               << " without it: " << (c.withinTolerance() ? "within " : "OVER ")
-              << figureText(gi::kSkipImageTolerance) << '\n';
+              << numberText(gi::kSkipImageTolerance, 4) << '\n';
 }
 
 int runBench(const ParsedArgs& args) {
@@ -252,7 +247,7 @@ int runBench(const ParsedArgs& args) {
                 }
             });
         std::cout << "  reference " << scene.name << ": " << (reference.reused ? "reused " : "rendered ")
-                  << reference.path.string() << " (" << figureText(reference.seconds, 3) << " s)\n";
+                  << reference.path.string() << " (" << numberText(reference.seconds, 3) << " s)\n";
 
         const gi::RunRequest run{.width = width, .height = height, .frames = frames, .seed = kPathTracerSeed};
         std::map<std::string, std::vector<double>> realTimeFrameMs;
@@ -293,14 +288,14 @@ int runBench(const ParsedArgs& args) {
             const double msPerSample = gi::pathTracerMsPerSample(*device, pipelines, scene, width, height);
             const gi::TimeBase base = equalTimeBase(realTimeFrameMs, msPerSample);
             std::cout << "  " << scene.name << " / pathtracer: budgets in multiples of " << base.technique
-                      << " (" << figureText(base.ms) << " ms), " << figureText(msPerSample)
+                      << " (" << numberText(base.ms, 4) << " ms), " << numberText(msPerSample, 4)
                       << " ms per sample\n";
             for (size_t b = 0; b < budgets.size(); ++b) {
                 const double budget = budgets[b];
                 gi::RunRequest ptRun = run;
                 ptRun.samplesPerFrame =
                     uint32_t(std::clamp(std::floor(budget * base.ms / msPerSample), 1.0, 65536.0));
-                const std::string preset = figureText(budget, 3) + "x-time";
+                const std::string preset = numberText(budget, 3) + "x-time";
                 records.push_back(
                     {scene.name, gi::runPathTracer(*device, pipelines, scene, preset, ptRun, reference),
                      reference.path.string(), gi::TimeBudget{.multiple = budget, .base = base}});
@@ -368,7 +363,7 @@ int runBench(const ParsedArgs& args) {
         std::ranges::count_if(skipChecks, [](const gi::SkipCheck& c) { return !c.withinTolerance(); });
     if (changing != 0) {
         std::cerr << "bench: " << changing << " skip(s) change the image by more than relMSE "
-                  << figureText(gi::kSkipImageTolerance) << " (DIR/skips.csv)\n";
+                  << numberText(gi::kSkipImageTolerance, 4) << " (DIR/skips.csv)\n";
         return 1;
     }
     uint64_t nonFinite = 0;

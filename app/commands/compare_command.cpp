@@ -1,12 +1,12 @@
 // `lumina compare REF.exr TEST.exr`: how far a rendered image is from a reference, on linear
 // radiance (relMSE, RMSE, worst pixel) and as displayed (PSNR, LDR-FLIP), with NaN/Inf counts.
 #include "app/command.h"
+#include "app/commands/number_text.h"
 #include "gi/image/exr.h"
 #include "gi/image/png.h"
 #include "gi/measure/compare.h"
 
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -15,12 +15,6 @@
 namespace lumina::app {
 
 namespace {
-
-std::string metricText(double value, int digits = 6) {
-    char text[64];
-    std::snprintf(text, sizeof text, "%.*g", digits, value);
-    return text;
-}
 
 std::string counts(const measure::NonFiniteCounts& c) {
     return std::to_string(c.nanPixels) + " NaN + " + std::to_string(c.infPixels) + " Inf pixels";
@@ -49,7 +43,8 @@ std::string meanRgb(const image::Image& image) {
         }
     }
     const double n = double(count == 0 ? 1 : count);
-    return "(" + metricText(sum[0] / n) + ", " + metricText(sum[1] / n) + ", " + metricText(sum[2] / n) + ")";
+    return "(" + numberText(sum[0] / n, 6) + ", " + numberText(sum[1] / n, 6) + ", " +
+           numberText(sum[2] / n, 6) + ")";
 }
 
 void printReport(const std::string& refPath, const std::string& testPath, const image::Image& reference,
@@ -58,20 +53,20 @@ void printReport(const std::string& refPath, const std::string& testPath, const 
     std::ostringstream out;
     out << "compare: " << refPath << " (reference) vs " << testPath << ", " << result.width << "x"
         << result.height << ", " << result.linear.pixels << " pixels compared\n";
-    out << "  relMSE     " << metricText(result.linear.relMse)
+    out << "  relMSE     " << numberText(result.linear.relMse, 6)
         << "   linear radiance, mean (x-r)^2/(r^2+0.01)\n";
-    out << "  RMSE       " << metricText(result.linear.rmse) << "   linear radiance\n";
+    out << "  RMSE       " << numberText(result.linear.rmse, 6) << "   linear radiance\n";
     out << "  mean       reference " << meanRgb(reference) << ", test " << meanRgb(test)
         << "   linear R, G, B over finite pixels\n";
     out << "  PSNR       "
-        << (std::isfinite(result.psnr) ? metricText(result.psnr, 5) + " dB" : std::string("inf dB"))
+        << (std::isfinite(result.psnr) ? numberText(result.psnr, 5) + " dB" : std::string("inf dB"))
         << "   tonemapped sRGB, peak 1\n";
-    out << "  max error  relMSE " << metricText(result.linear.maxRelMse.value) << " at ("
+    out << "  max error  relMSE " << numberText(result.linear.maxRelMse.value, 6) << " at ("
         << result.linear.maxRelMse.x << ", " << result.linear.maxRelMse.y << ")\n";
-    out << "  FLIP       mean " << metricText(result.flip.mean) << ", max " << metricText(result.flip.max)
-        << " at (" << result.flip.maxX << ", " << result.flip.maxY << ")   LDR-FLIP, "
-        << metricText(options.flip.pixelsPerDegree, 4) << " ppd, exposure "
-        << metricText(options.display.exposureEv, 4) << " EV\n";
+    out << "  FLIP       mean " << numberText(result.flip.mean, 6) << ", max "
+        << numberText(result.flip.max, 6) << " at (" << result.flip.maxX << ", " << result.flip.maxY
+        << ")   LDR-FLIP, " << numberText(options.flip.pixelsPerDegree, 4) << " ppd, exposure "
+        << numberText(options.display.exposureEv, 4) << " EV\n";
     out << "  NaN/Inf    reference " << counts(result.reference) << ", test " << counts(result.test) << '\n';
     std::cout << out.str();
 }
