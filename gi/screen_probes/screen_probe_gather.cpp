@@ -190,7 +190,12 @@ void ScreenProbeGather::record(FrameContext& frame, const ScreenProbeInputs& inp
         frame.skip(ProbeTraceNearFieldPass::kName,
                    inputs.surfaceCache ? "nearFieldDistance is 0" : "no surface cache given");
     }
-    traceFarField_.record(frame, view);
+    // A near field that reaches the rays' end leaves its misses to the sky: no far field.
+    if (nearFieldTraced_ && range.nearField >= range.maxDistance) {
+        frame.skip(ProbeTraceFarFieldPass::kName, "the near field reaches the trace's end");
+    } else {
+        traceFarField_.record(frame, view);
+    }
     rayShading_.record(frame, view);
     composite_.record(frame, view);
     temporal_.record(frame, view);

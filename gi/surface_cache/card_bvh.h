@@ -10,8 +10,9 @@
 // moved, in O(n log n) (nth_element per level).
 //
 // The owner of p for a unit normal n is the card, among those whose padded bounds hold p, with
-// the highest cardOwnerScore (card_bvh_shared.h: normal agreement less distance outside the
-// card's surface box), the lower index on equal scores; none when no card's bounds hold p.
+// the highest cardOwnerScoreOnInstance (card_bvh_shared.h: normal agreement less distance outside
+// the card's surface box, the cards of the instance an SDF hit names first), the lower index on
+// equal scores; none when no card's bounds hold p.
 // findCardOwner here and in card_bvh_traversal.hlsli apply that rule to the same floats.
 #include "shaders/surface_cache/card_bvh_shared.h"
 
@@ -36,11 +37,12 @@ struct CardOwner {
     float score = LUMINA_CARD_NO_SCORE;
 };
 
+// instance: the scene instance the point lies on, when known (an SDF hit), else LUMINA_ANY_INSTANCE.
 CardOwner findCardOwner(const CardBvh& bvh, std::span<const gpu::SurfaceCard> cards, const glm::vec3& p,
-                        const glm::vec3& n);
+                        const glm::vec3& n, uint32_t instance = LUMINA_ANY_INSTANCE);
 // The same rule over every card, for tests.
 CardOwner findCardOwnerBruteForce(std::span<const gpu::SurfaceCard> cards, const glm::vec3& p,
-                                  const glm::vec3& n);
+                                  const glm::vec3& n, uint32_t instance = LUMINA_ANY_INSTANCE);
 
 // Node fields, decoded from the GPU layout.
 inline uint32_t nodeCardCount(const gpu::CardBvhNode& node) {

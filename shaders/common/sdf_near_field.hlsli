@@ -35,23 +35,50 @@
 // Median-split instance BVHs are at most ceil(log2(n)) + 1 levels deep: 32 entries cover
 // any instance count the 32-bit ids allow.
 #define LUMINA_SDF_INSTANCE_STACK_SIZE 32
+// The least rate at which an open surface's distance falls along a ray that the band of an open
+// hit assumes (a ray 6 degrees off the sheet's plane): bands stay within ten thresholds.
+#define LUMINA_SDF_OPEN_BAND_MIN_RATE 0.1f
 
 // The best hit so far of a near-field trace, in the frame of the instance that made it.
+//
+// An open (unsigned) surface is hit as soon as the ray comes within its threshold, which is
+// 0.6 of its own voxels: where along the ray the sheet really is stays unknown over a band of
+// threshold / (the rate at which the distance falls along the ray) beyond the hit, ten
+// thresholds on grazing rays. So another instance whose surface the ray meets within that band,
+// with a finer threshold, is the better answer: the surface the ray reaches first, or the same
+// sheet's neighbour known more sharply. `reach` keeps the segment open that far. This is what let
+// `two_rooms`' emissive panel, filling a hole in the ceiling of the room's shell (an open mesh
+// with 13 cm voxels), hide behind the shell's band around the hole's rim, for the rays that see
+// it at a slant (docs/gi.md, 33.).
 struct SdfNearFieldState {
     float t;            // world units; the end of the traced segment while nothing was hit
     uint instance;      // LUMINA_SDF_NO_HIT while nothing was hit
     float3 objectPoint; // hit point in the instance's object space
     uint steps;         // summed over every instance traced
+    float threshold;    // the hit's threshold in world units (its sharpness); 0 while nothing was hit
+    float reach;        // world t up to which a sharper hit may still replace this one (>= t)
 };
 
-// Sphere traces one instance over world t in [tMin, state.t]; a nearer hit replaces the one
-// in `state`.
+// Whether a hit at world t with world threshold `threshold` and band end `reach` replaces the
+// best so far: the nearer one, unless the other is sharper and lies within the nearer one's band.
+bool sdfNearFieldHitWins(float t, float threshold, float reach, SdfNearFieldState state) {
+    if (state.instance == LUMINA_SDF_NO_HIT) {
+        return t <= state.t;
+    }
+    if (t < state.t) {
+        return !(state.t <= reach && state.threshold < threshold);
+    }
+    return t <= state.reach && threshold < state.threshold;
+}
+
+// Sphere traces one instance over world t in [tMin, state.reach]; a hit that wins
+// (sdfNearFieldHitWins) replaces the one in `state`.
 void sdfTraceInstance(uint instanceIndex, float3 origin, float3 direction, float tMin, SdfTraceParams params,
                       inout SdfNearFieldState state) {
     SdfInstanceDesc instance = LUMINA_SDF_INSTANCE(instanceIndex);
     // Leaves hold several instances: skip those whose own world box the segment misses.
-    if (intersectBox(origin, safeReciprocal3(direction), instance.worldMinAndScale.xyz, instance.worldMax.xyz, tMin,
-                     state.t) < 0.0f) {
+    if (intersectBox(origin, safeReciprocal3(direction), instance.worldMinAndScale.xyz, instance.worldMax.xyz,
+                     tMin, state.reach) < 0.0f) {
         return;
     }
     SdfVolumeDesc volume = LUMINA_SDF_VOLUME(instance.ids.x);
@@ -66,7 +93,7 @@ void sdfTraceInstance(uint instanceIndex, float3 origin, float3 direction, float
     float2 range = boxEntryExit(o, safeReciprocal3(d), volume.volumeMinAndVoxelSize.xyz,
                                 volume.volumeMaxAndInvVoxelSize.xyz);
     float t = max(range.x, tMin * scale);
-    float tExit = min(range.y, state.t * scale);
+    float tExit = min(range.y, state.reach * scale);
     if (!(t <= tExit)) {
         return;
     }
@@ -91,9 +118,21 @@ void sdfTraceInstance(uint instanceIndex, float3 origin, float3 direction, float
                     t = refined;
                 }
             }
-            state.t = t / scale;
-            state.instance = instanceIndex;
-            state.objectPoint = o + t * d;
+            // An open hit's band: where the sheet lies along the ray, from the rate at which the
+            // distance fell over the last step (exact for a plane; one threshold when the
+            // first sample hit).
+            float rate = previousT >= 0.0f ? (previousDistance - distance) / (t - previousT) : 1.0f;
+            float band = open ? threshold / clamp(rate, LUMINA_SDF_OPEN_BAND_MIN_RATE, 1.0f) : 0.0f;
+            float hitT = t / scale;
+            float hitThreshold = threshold / scale;
+            float hitReach = min((t + band) / scale, params.maxDistance);
+            if (sdfNearFieldHitWins(hitT, hitThreshold, hitReach, state)) {
+                state.t = hitT;
+                state.instance = instanceIndex;
+                state.objectPoint = o + t * d;
+                state.threshold = hitThreshold;
+                state.reach = max(hitReach, hitT);
+            }
             return;
         }
         previousT = t;
@@ -131,13 +170,16 @@ SdfHit sdfTraceNearField(float3 origin, float3 direction, float tMin, SdfTracePa
     state.instance = LUMINA_SDF_NO_HIT;
     state.objectPoint = float3(0.0f, 0.0f, 0.0f);
     state.steps = 0u;
+    state.threshold = 0.0f;
+    state.reach = params.maxDistance;
     if (LUMINA_SDF_SCENE.instanceBvhNodeCount != 0u) {
         float3 invDir = safeReciprocal3(direction);
         uint stackNode[LUMINA_SDF_INSTANCE_STACK_SIZE];
         float stackEntry[LUMINA_SDF_INSTANCE_STACK_SIZE];
         uint stackSize = 0u;
         BvhNode root = LUMINA_SDF_INSTANCE_NODE(0u);
-        float rootEntry = intersectBox(origin, invDir, root.minAndIndex.xyz, root.maxAndCount.xyz, tMin, state.t);
+        float rootEntry =
+            intersectBox(origin, invDir, root.minAndIndex.xyz, root.maxAndCount.xyz, tMin, state.reach);
         if (rootEntry >= 0.0f) {
             stackNode[0] = 0u;
             stackEntry[0] = rootEntry;
@@ -146,7 +188,7 @@ SdfHit sdfTraceNearField(float3 origin, float3 direction, float tMin, SdfTracePa
         while (stackSize > 0u) {
             stackSize -= 1u;
             uint node = stackNode[stackSize];
-            if (stackEntry[stackSize] > state.t) {
+            if (stackEntry[stackSize] > state.reach) {
                 continue;
             }
             for (;;) {
@@ -163,8 +205,10 @@ SdfHit sdfTraceNearField(float3 origin, float3 direction, float tMin, SdfTracePa
                 uint right = index;
                 BvhNode l = LUMINA_SDF_INSTANCE_NODE(left);
                 BvhNode r = LUMINA_SDF_INSTANCE_NODE(right);
-                float tLeft = intersectBox(origin, invDir, l.minAndIndex.xyz, l.maxAndCount.xyz, tMin, state.t);
-                float tRight = intersectBox(origin, invDir, r.minAndIndex.xyz, r.maxAndCount.xyz, tMin, state.t);
+                float tLeft =
+                    intersectBox(origin, invDir, l.minAndIndex.xyz, l.maxAndCount.xyz, tMin, state.reach);
+                float tRight =
+                    intersectBox(origin, invDir, r.minAndIndex.xyz, r.maxAndCount.xyz, tMin, state.reach);
                 if (tLeft >= 0.0f && tRight >= 0.0f) {
                     bool leftFirst = tLeft <= tRight;
                     if (stackSize < LUMINA_SDF_INSTANCE_STACK_SIZE) {

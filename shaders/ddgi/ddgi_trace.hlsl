@@ -31,11 +31,11 @@ RWStructuredBuffer<float4> gRayData : register(u0);
 #define LUMINA_SKY_TEXTURE gSky
 #include "common/sky_sampling.hlsli"
 
-// The surface cache's radiance leaving a hit towards the probe: its card's final lighting, or
-// the voxel lighting where no card covers it.
-float3 hitRadiance(float3 p, float3 n, float3 seenFrom, bool nearField) {
+// The surface cache's radiance leaving a hit towards the probe: its card's final lighting (the
+// hit instance's cards first), or the voxel lighting where no card covers it.
+float3 hitRadiance(float3 p, float3 n, float3 seenFrom, uint instance, bool nearField) {
     if (nearField) {
-        const CardOwner owner = findCardOwner(p, n);
+        const CardOwner owner = findCardOwner(p, n, instance);
         if (owner.card != LUMINA_NO_CARD) {
             const float4 card = cardRadiance(gCards[owner.card], p);
             if (card.a > 0.0) {
@@ -65,7 +65,8 @@ float4 traceRay(float3 origin, float3 direction) {
         return float4(0.0, 0.0, 0.0, -max(t, 1e-6 * maxDistance));
     }
     const float3 facing = dot(n, n) > 0.0 ? n : -direction;
-    return float4(ddgiSanitise(hitRadiance(hit.positionAndT.xyz, facing, sdfSeenFrom(direction, t), nearField)), t);
+    const float3 radiance = hitRadiance(hit.positionAndT.xyz, facing, sdfSeenFrom(direction, t), hit.ids.x, nearField);
+    return float4(ddgiSanitise(radiance), t);
 }
 
 groupshared float4 gsProbe; // xyz: ray origin; w: rays to trace

@@ -2,11 +2,12 @@
 // Pass 5, near-field trace: every ray of every valid probe sphere-traced through the mesh SDFs
 // (sdfTraceNearField: the instance BVH, closest hit) from the far field's origin, up to the
 // near-field distance (nearFieldDistance). A hit finds the card that owns it through the card BVH
-// (findCardOwner, the rule of card_bvh_shared.h) and reads the surface cache's final layer there:
-// the outgoing radiance of the surface, i.e. the radiance arriving back along the ray. Where no
-// card owns the hit, or none of the card's texels around it were captured, the voxel lighting at
-// the hit stands in (sampleVoxelLighting). Writes the hit record (the far field replaces the
-// misses' with its own) and the near-field result (rgb radiance, a: LUMINA_SP_NEAR_*).
+// (findCardOwner, the rule of card_bvh_shared.h, the hit instance's cards first) and reads the
+// surface cache's final layer there: the outgoing radiance of the surface, i.e. the radiance
+// arriving back along the ray. Where no card owns the hit, or none of the card's texels around it
+// were captured, the voxel lighting at the hit stands in (sampleVoxelLighting). Writes the hit
+// record (the far field replaces the misses' with its own) and the near-field result (rgb
+// radiance, a: LUMINA_SP_NEAR_*).
 // One group per probe; thread t traces rays t, t + 64, ...
 #include "screen_probes/probe_trace_common.hlsli"
 #include "surface_cache/card_bvh_shared.h"
@@ -31,7 +32,7 @@ float4 nearFieldRadiance(SdfHit hit, float3 direction) {
     const float3 p = hit.positionAndT.xyz;
     // The side the ray came from, also on open (unsigned) surfaces (sdfFacingNormal).
     const float3 n = sdfFacingNormal(hit.normalAndCoverage.xyz, direction, hit.positionAndT.w);
-    const CardOwner owner = findCardOwner(p, n);
+    const CardOwner owner = findCardOwner(p, n, hit.ids.x);
     if (owner.card != LUMINA_NO_CARD) {
         const float4 card = cardRadiance(gCards[owner.card], p);
         if (card.a > 0.0) {

@@ -23,8 +23,13 @@ LUMINA_GPU_NAMESPACE_END
 // Traversal stack entries; a tree of depth d needs d (the builder refuses deeper trees; median
 // splits of 4-card leaves reach 32 levels only past 2^33 cards).
 #define LUMINA_CARD_BVH_STACK_SIZE 32u
-// Lower than any score a containing card can get (scores lie in [-1 - sqrt(3), 1]).
+// Lower than any score a containing card can get (scores lie in [-1 - sqrt(3), 5]).
 #define LUMINA_CARD_NO_SCORE -1e30f
+// The instance of a query that does not know which instance its point lies on (a raster pixel).
+#define LUMINA_ANY_INSTANCE 0xffffffffu
+// Added to the score of the queried instance's own cards: more than the whole range of
+// cardOwnerScore ([-1 - sqrt(3), 1]), so that they outrank every other instance's cards.
+#define LUMINA_CARD_OWN_INSTANCE_BONUS 4.0f
 
 LUMINA_GPU_NAMESPACE_BEGIN
 
@@ -58,6 +63,17 @@ LUMINA_INLINE float cardOwnerScore(SurfaceCard card, float3 p, float3 n) {
     float3 outside = max(lo - p, zero) + max(p - hi, zero);
     float3 normal = float3(card.normalAndPadding.x, card.normalAndPadding.y, card.normalAndPadding.z);
     return dot(normal, n) - sqrt(dot(outside, outside)) / padding;
+}
+
+// cardOwnerScore for a point that an SDF trace found on `instance` (LUMINA_ANY_INSTANCE: not
+// known). The trace knows which mesh it hit, and that mesh's cards hold its light: where two
+// instances' surfaces coincide (an emissive panel filling a hole in the ceiling, facing the same
+// way) the geometric score cannot tell their cards apart, and the lower index, the ceiling's, read
+// the dark ceiling for the panel's hits (docs/gi.md, 33.). Another instance's card still owns a
+// point that none of the hit instance's cards holds.
+LUMINA_INLINE float cardOwnerScoreOnInstance(SurfaceCard card, float3 p, float3 n, uint instance) {
+    bool own = instance != LUMINA_ANY_INSTANCE && asuint(card.boundsMaxAndInstance.w) == instance;
+    return cardOwnerScore(card, p, n) + (own ? LUMINA_CARD_OWN_INSTANCE_BONUS : 0.0f);
 }
 
 LUMINA_GPU_NAMESPACE_END

@@ -7,7 +7,7 @@
 LUMINA_GPU_NAMESPACE_BEGIN
 
 struct CardBvhQuery {
-    float4 position; // xyz: world point; w: 0
+    float4 position; // xyz: world point; w: asfloat(instance), LUMINA_ANY_INSTANCE for none
     float4 normal;   // xyz: unit normal; w: 0
 };
 

@@ -3,7 +3,8 @@
 // Finds the card that owns a point (an SDF hit): the GPU twin of findCardOwner in
 // gi/surface_cache/card_bvh.cpp. Visits every node whose box holds the point (a point query
 // cannot stop early: a later card may fit better), scores each containing card with
-// cardOwnerScore (card_bvh_shared.h) and keeps the highest; equal scores go to the lower index.
+// cardOwnerScoreOnInstance (card_bvh_shared.h) and keeps the highest; equal scores go to the
+// lower index.
 //
 // The includer says where nodes and cards come from:
 //
@@ -23,8 +24,9 @@ struct CardOwner {
     float score; // cardOwnerScore of that card, LUMINA_CARD_NO_SCORE when none
 };
 
-// p: world position; n: unit surface normal at p (or the reversed ray direction).
-CardOwner findCardOwner(float3 p, float3 n) {
+// p: world position; n: unit surface normal at p (or the reversed ray direction); instance: the
+// scene instance an SDF hit names (SdfHit.ids.x), whose cards come first, or LUMINA_ANY_INSTANCE.
+CardOwner findCardOwner(float3 p, float3 n, uint instance) {
     CardOwner best;
     best.card = LUMINA_NO_CARD;
     best.score = LUMINA_CARD_NO_SCORE;
@@ -54,7 +56,7 @@ CardOwner findCardOwner(float3 p, float3 n) {
             if (!cardContains(card, p)) {
                 continue;
             }
-            float score = cardOwnerScore(card, p, n);
+            float score = cardOwnerScoreOnInstance(card, p, n, instance);
             if (score > best.score || (score == best.score && index < best.card)) {
                 best.card = index;
                 best.score = score;

@@ -119,7 +119,8 @@ TEST_P(ProbeNearFieldGpuTest, NearHitsReadTheirCardsFinalLightingAndEveryOutputI
             if (glm::dot(normal, normal) == 0.0f) {
                 normal = -glm::vec3(rays[i].directionAndWeight);
             }
-            const surface_cache::CardOwner owner = findCardOwner(cache.cardBvh(), cards, position, normal);
+            const surface_cache::CardOwner owner =
+                findCardOwner(cache.cardBvh(), cards, position, normal, hits[i].ids.x);
             if (owner.card == LUMINA_NO_CARD) {
                 ++otherOwner;
                 continue;
@@ -241,6 +242,42 @@ TEST_P(ProbeNearFieldGpuTest, WithoutCacheOrDistanceTheNearFieldIsSkippedAndNoth
     noGrid.voxelGrid.dims = glm::uvec3(0);
     refused(noGrid, "voxel grid");
     list->end();
+}
+
+// A near field that reaches the rays' end (the presets' since docs/gi.md 33.) skips the far field
+// with its reason, and its misses read the sky: every ray's radiance is bit for bit what it is
+// when the far field runs on past a scene it cannot hit any more (the box's diagonal is 965 mm).
+TEST_P(ProbeNearFieldGpuTest, ANearFieldToTheRaysEndSkipsTheFarFieldAndChangesNothing) {
+    LUMINA_REQUIRE_KERNELS();
+    constexpr uint32_t kSmall = 32;
+    constexpr float kAcross = 1200.0f; // mm
+    ScreenProbeHarness whole(device(), shaders(), scene::loadScene("cornell_box_point"), kSmall, kSmall,
+                             {.maxTraceDistance = kAcross, .nearFieldDistance = kAcross});
+    ScreenProbeHarness beyond(device(), shaders(), scene::loadScene("cornell_box_point"), kSmall, kSmall,
+                              {.maxTraceDistance = 2.0f * kAcross, .nearFieldDistance = kAcross});
+    for (ScreenProbeHarness* h : {&whole, &beyond}) {
+        h->setSky(glm::vec3(0.2f, 0.3f, 0.4f));
+        h->useVoxelLighting(false);
+        h->addSurfaceCache(cornellCacheSettings(), quickCacheLighting());
+    }
+    for (int frame = 0; frame < 3; ++frame) {
+        const std::vector<std::string> skipped = whole.render();
+        const std::vector<std::string> traced = beyond.render();
+        EXPECT_EQ(std::count(skipped.begin(), skipped.end(), gi::ProbeTraceFarFieldPass::kName), 0);
+        EXPECT_EQ(std::count(traced.begin(), traced.end(), gi::ProbeTraceFarFieldPass::kName), 1);
+        EXPECT_EQ(skipReason(whole.skipped(), gi::ProbeTraceFarFieldPass::kName),
+                  "the near field reaches the trace's end");
+    }
+    const std::vector<glm::vec4> a = whole.read<glm::vec4>(whole.probes().resources().rayRadiance);
+    const std::vector<glm::vec4> b = beyond.read<glm::vec4>(beyond.probes().resources().rayRadiance);
+    ASSERT_EQ(a.size(), b.size());
+    uint32_t differ = 0, sky = 0;
+    for (size_t i = 0; i < a.size(); ++i) {
+        differ += a[i] != b[i];
+        sky += a[i].a == 0.0f && a[i].b > 0.0f; // a miss (alpha 0) that read the sky
+    }
+    EXPECT_EQ(differ, 0u);
+    EXPECT_GT(sky, 0u) << "no ray left the open box: the misses were not exercised";
 }
 
 // The summed weight of the covered voxels around p in a coverage-weighted trilinear lookup of the

@@ -9,10 +9,11 @@
 namespace lumina::surface_cache {
 namespace {
 
-gpu::SurfaceCard flatCard(glm::vec3 lo, glm::vec3 hi, glm::vec3 normal, float padding) {
+gpu::SurfaceCard flatCard(glm::vec3 lo, glm::vec3 hi, glm::vec3 normal, float padding,
+                          uint32_t instance = 0) {
     gpu::SurfaceCard card{};
     card.boundsMinAndFlags = glm::vec4(lo - glm::vec3(padding), 0.0f);
-    card.boundsMaxAndInstance = glm::vec4(hi + glm::vec3(padding), 0.0f);
+    card.boundsMaxAndInstance = glm::vec4(hi + glm::vec3(padding), gpu::asfloat(instance));
     card.normalAndPadding = glm::vec4(normal, padding);
     return card;
 }
@@ -68,8 +69,8 @@ TEST(SurfaceCacheCardBvh, OwnerMatchesBruteForce) {
         const CardBvh bvh = buildCardBvh(cards);
         uint32_t found = 0;
         for (const test::OwnerQuery& q : test::randomQueries(cards, 20000, count)) {
-            const CardOwner fast = findCardOwner(bvh, cards, q.position, q.normal);
-            const CardOwner slow = findCardOwnerBruteForce(cards, q.position, q.normal);
+            const CardOwner fast = findCardOwner(bvh, cards, q.position, q.normal, q.instance);
+            const CardOwner slow = findCardOwnerBruteForce(cards, q.position, q.normal, q.instance);
             ASSERT_EQ(fast.card, slow.card);
             ASSERT_EQ(fast.score, slow.score);
             found += fast.card != LUMINA_NO_CARD;
@@ -100,6 +101,32 @@ TEST(SurfaceCacheCardBvh, OwnerIsTheCardFacingTheNormalAndThroughThePoint) {
     // Equal scores: the lower index.
     const std::vector<gpu::SurfaceCard> twins = {cards[0], cards[0]};
     EXPECT_EQ(findCardOwner(buildCardBvh(twins), twins, {1, 0, 1}, {0, 1, 0}).card, 0u);
+}
+
+// two_rooms' panel fills a hole in the ceiling, in its plane and facing the same way: only the
+// instance an SDF hit names tells the two cards apart (docs/gi.md, 33.).
+TEST(SurfaceCacheCardBvh, AHitOnAnInstanceReadsItsOwnCards) {
+    const float pad = 1.0f;
+    const uint32_t shell = 0, panel = 2;
+    const std::vector<gpu::SurfaceCard> cards = {
+        flatCard({0, 100, 0}, {100, 100, 100}, {0, -1, 0}, pad, shell), // 0: the ceiling, holed
+        flatCard({40, 100, 40}, {60, 100, 60}, {0, -1, 0}, pad, panel), // 1: the panel in its hole
+        flatCard({0, 0, 0}, {100, 0, 100}, {0, 1, 0}, pad, shell),      // 2: the floor
+    };
+    const CardBvh bvh = buildCardBvh(cards);
+    const auto owner = [&](glm::vec3 p, glm::vec3 n, uint32_t instance) {
+        return findCardOwner(bvh, cards, p, n, instance).card;
+    };
+    EXPECT_EQ(owner({50, 100, 50}, {0, -1, 0}, LUMINA_ANY_INSTANCE), 0u); // equal scores: the lower index
+    EXPECT_EQ(owner({50, 100, 50}, {0, -1, 0}, panel), 1u);
+    EXPECT_EQ(owner({50, 100, 50}, {0, -1, 0}, shell), 0u);
+    // The hit instance's card wins even where another fits the normal better...
+    EXPECT_EQ(owner({50, 100, 50}, {0, 1, 0}, panel), 1u);
+    // ... but where none of its cards holds the point, the others still own it.
+    EXPECT_EQ(owner({20, 100, 20}, {0, -1, 0}, panel), 0u);
+    EXPECT_EQ(owner({50, 0, 50}, {0, 1, 0}, panel), 2u);
+    EXPECT_EQ(owner({50, 50, 50}, {0, 1, 0}, panel), LUMINA_NO_CARD);
+    EXPECT_EQ(findCardOwnerBruteForce(cards, {50, 100, 50}, {0, -1, 0}, panel).card, 1u);
 }
 
 TEST(SurfaceCacheCardBvh, BadCardsThrow) {

@@ -1,7 +1,9 @@
 #pragma once
 // Random cards and owner queries for the card BVH tests (CPU and GPU): boxes of mixed sizes,
-// some flat like real cards, with axis normals and a few tilted ones; queries mostly on or near
-// card bounds (where ownership is decided), some anywhere.
+// some flat like real cards, with axis normals and a few tilted ones, on kRandomInstances
+// instances; queries mostly on or near card bounds (where ownership is decided), some anywhere,
+// half of them naming an instance (as an SDF hit does), now and then one without cards.
+#include "shaders/surface_cache/card_bvh_shared.h"
 #include "shaders/surface_cache/surface_card_shared.h"
 
 #include <glm/glm.hpp>
@@ -9,6 +11,8 @@
 #include <vector>
 
 namespace lumina::surface_cache::test {
+
+inline constexpr uint32_t kRandomInstances = 6;
 
 inline std::vector<gpu::SurfaceCard> randomCards(uint32_t count, uint32_t seed) {
     std::mt19937 rng(seed);
@@ -30,7 +34,8 @@ inline std::vector<gpu::SurfaceCard> randomCards(uint32_t count, uint32_t seed) 
         gpu::SurfaceCard& card = cards[i];
         card = {};
         card.boundsMinAndFlags = glm::vec4(lo - glm::vec3(padding), 0.0f);
-        card.boundsMaxAndInstance = glm::vec4(lo + extent + glm::vec3(padding), 0.0f);
+        card.boundsMaxAndInstance =
+            glm::vec4(lo + extent + glm::vec3(padding), gpu::asfloat(rng() % kRandomInstances));
         card.normalAndPadding = glm::vec4(normal, padding);
     }
     return cards;
@@ -39,6 +44,7 @@ inline std::vector<gpu::SurfaceCard> randomCards(uint32_t count, uint32_t seed) 
 struct OwnerQuery {
     glm::vec3 position;
     glm::vec3 normal;
+    uint32_t instance = LUMINA_ANY_INSTANCE;
 };
 
 inline std::vector<OwnerQuery> randomQueries(const std::vector<gpu::SurfaceCard>& cards, uint32_t count,
@@ -49,6 +55,9 @@ inline std::vector<OwnerQuery> randomQueries(const std::vector<gpu::SurfaceCard>
     for (uint32_t i = 0; i < count; ++i) {
         glm::vec3 n(unit(rng) - 0.5f, unit(rng) - 0.5f, unit(rng) - 0.5f);
         queries[i].normal = glm::length(n) > 1e-3f ? glm::normalize(n) : glm::vec3(0, 1, 0);
+        if (i % 2 == 1) {
+            queries[i].instance = rng() % (kRandomInstances + 1);
+        }
         if (i % 4 == 0 || cards.empty()) {
             queries[i].position = glm::vec3(anywhere(rng), anywhere(rng), anywhere(rng));
             continue;
