@@ -21,6 +21,7 @@ for d in ${DISTANCES:-0 default 5 20 40}; do
     /^  mean / { gsub(/[(),]/, " "); printf "relMSE %s mean/reference %.4f", r, ($7 + $8 + $9) / ($3 + $4 + $5) }')
   cost=$($lumina render "$scene" --preset "$preset" --size 1920x1080 $flag --frames 300 --warmup 100 --timings \
     --out /tmp/nf.png 2>&1 | grep -E "near field|far field|shade rays" |
-    awk '{ m = $(NF - 3); sub(/^ *screen probes: /, ""); sub(/ +[0-9.]+ +[0-9.]+ +[0-9.]+ +[0-9]+$/, ""); printf "%s %s ms; ", $0, m }')
+    awk '/skipped/ { sub(/^ *screen probes: /, ""); sub(/: skipped.*/, " skipped; "); printf "%s", $0; next }
+      { m = $(NF - 3); sub(/^ *screen probes: /, ""); sub(/ +[0-9.]+ +[0-9.]+ +[0-9.]+ +[0-9]+$/, ""); printf "%s %s ms; ", $0, m }')
   echo "$scene $preset near field $d: $figures; 1080p: $cost"
 done | tee "$out/near_field.txt"
