@@ -5,7 +5,8 @@
 //     W' = (1 - a) W + a w,   L' = ((1 - a) W L + a w x) / W'   (a = probeHistoryBlend, about 10% new),
 // so early frames average like a running mean and texels no ray reached keep their radiance. A new
 // value brighter than outlierClamp x max(its history, the probe's mean history) is scaled down to that
-// (a single bright ray must not linger for ten frames). The factor trades bias for steadiness: a
+// (a single bright ray must not linger for ten frames; with k > 1 rays a texel the factor is
+// 1 + (outlierClamp - 1) / k, the same bound on one ray). The factor trades bias for steadiness: a
 // light smaller than a texel reads several times its texel's mean every frame a ray hits it, so
 // 2 took a quarter of the Cornell box floor's light; clamping against the probe's brightest texel
 // instead kept all of it but let the image flicker ten times more (docs/screen_probes.md). L' is
@@ -59,8 +60,13 @@ groupshared float gsSolidAngle[LUMINA_SP_PROBE_TEXELS];
         x = float4(0.0, 0.0, 0.0, 0.0);
     }
     // Outlier clamp: relative to the probe's own light level; a probe with no (or black) history
-    // has nothing to call an outlier against.
-    const float limit = gSp.outlierClamp * max(history.a > 0.0 ? luminance(history.rgb) : 0.0, meanLuminance);
+    // has nothing to call an outlier against. A texel averages k = rays / texels rays, so one ray
+    // moves it by 1/k of its excess: the factor bounds that one ray's excess to (outlierClamp - 1)
+    // whatever k is. With a fixed factor, high (2 rays a texel) kept light that low and medium
+    // clamp, and was less accurate than medium (docs/gi.md, energy 36.).
+    const float raysPerTexel = max(float(gSp.raysPerProbe) / float(LUMINA_SP_PROBE_TEXELS), 1.0);
+    const float factor = 1.0 + (gSp.outlierClamp - 1.0) / raysPerTexel;
+    const float limit = factor * max(history.a > 0.0 ? luminance(history.rgb) : 0.0, meanLuminance);
     const float l = luminance(x.rgb);
     if (limit > 0.0 && l > limit) {
         x.rgb *= limit / l;

@@ -81,6 +81,20 @@ TEST_P(ProbeTemporalGpuTest, TemporalAccumulationNeverExceedsTheInputBound) {
     }
 }
 
+// The brightest red radiance among the valid probes' history texels.
+float brightestHistoryTexel(ScreenProbeHarness& harness) {
+    const gi::ScreenProbeResources& r = harness.probes().resources();
+    const auto probes = harness.read<gpu::ScreenProbe>(r.probes[harness.probes().current()]);
+    const auto history = harness.read<gpu::float4>(r.history[harness.probes().current()]);
+    float most = 0.0f;
+    for (size_t i = 0; i < history.size(); ++i) {
+        if (probes[i / LUMINA_SP_PROBE_TEXELS].info.x == LUMINA_SP_PROBE_VALID) {
+            most = std::max(most, history[i].x);
+        }
+    }
+    return most;
+}
+
 // The outlier clamp: after the history settles at L, one frame of a sky 1000x brighter moves no
 // texel above outlierClamp x L (without the clamp the sky texels would jump to about 100 L), and
 // the next normal frame pulls them back down.
@@ -90,31 +104,46 @@ TEST_P(ProbeTemporalGpuTest, OutlierClampLimitsASingleBrightFrame) {
     ScreenProbeHarness harness(device(), shaders(), cornellWithSky(), 32, 32);
     harness.setSky(glm::vec3(L));
     harness.fillVoxels([&](uint32_t, uint32_t, uint32_t) { return glm::vec4(L, L, L, 1.0f); });
-    const gi::ScreenProbeResources& r = harness.probes().resources();
     for (int i = 0; i < 10; ++i) {
         harness.render();
     }
-    auto maxHistory = [&] {
-        const auto probes = harness.read<gpu::ScreenProbe>(r.probes[harness.probes().current()]);
-        const auto history = harness.read<gpu::float4>(r.history[harness.probes().current()]);
-        float most = 0.0f;
-        for (size_t i = 0; i < history.size(); ++i) {
-            if (probes[i / LUMINA_SP_PROBE_TEXELS].info.x == LUMINA_SP_PROBE_VALID) {
-                most = std::max(most, history[i].x);
-            }
-        }
-        return most;
-    };
-    EXPECT_NEAR(maxHistory(), L, 1e-4f);
+    EXPECT_NEAR(brightestHistoryTexel(harness), L, 1e-4f);
     harness.setSky(glm::vec3(1000.0f * L));
     harness.render();
     const float clamp = harness.probes().settings().outlierClamp;
-    const float afterSpike = maxHistory();
+    const float afterSpike = brightestHistoryTexel(harness);
     EXPECT_GT(afterSpike, 1.01f * L) << "the bright frame counts, within the clamp";
     EXPECT_LE(afterSpike, clamp * L * (1.0f + 1e-4f));
     harness.setSky(glm::vec3(L));
     harness.render();
-    EXPECT_LT(maxHistory(), afterSpike);
+    EXPECT_LT(brightestHistoryTexel(harness), afterSpike);
+}
+
+// A texel averages k = rays / texels rays, so one bright ray moves it by 1/k of its excess; the
+// clamp's factor, 1 + (outlierClamp - 1) / k, bounds that one ray the same at every ray count.
+// With the new frame taking all the weight (probeHistoryBlend 1), a frame of a sky 1000x brighter
+// leaves the brightest texel exactly at the factor x L: a fixed factor would read outlierClamp x L
+// at 128 and 256 rays.
+TEST_P(ProbeTemporalGpuTest, OutlierClampBoundsOneRayWhateverTheRaysATexel) {
+    LUMINA_REQUIRE_KERNELS();
+    const float L = 0.5f;
+    for (const uint32_t rays : {32u, 64u, 128u, 256u}) {
+        gi::ScreenProbeSettings settings;
+        settings.raysPerProbe = rays;
+        settings.probeHistoryBlend = 1.0f;
+        ScreenProbeHarness harness(device(), shaders(), cornellWithSky(), 32, 32, settings);
+        harness.setSky(glm::vec3(L));
+        harness.fillVoxels([&](uint32_t, uint32_t, uint32_t) { return glm::vec4(L, L, L, 1.0f); });
+        for (int i = 0; i < 4; ++i) {
+            harness.render();
+        }
+        ASSERT_NEAR(brightestHistoryTexel(harness), L, 1e-4f) << rays << " rays";
+        harness.setSky(glm::vec3(1000.0f * L));
+        harness.render();
+        const float raysPerTexel = std::max(float(rays) / float(LUMINA_SP_PROBE_TEXELS), 1.0f);
+        const float factor = 1.0f + (settings.outlierClamp - 1.0f) / raysPerTexel;
+        EXPECT_NEAR(brightestHistoryTexel(harness), factor * L, 1e-3f * factor * L) << rays << " rays";
+    }
 }
 
 // Probe radiance history: a static camera keeps it (weights follow W' = 0.9 W + 0.1 w exactly);
