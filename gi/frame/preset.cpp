@@ -48,8 +48,8 @@ constexpr Preset kPresets[] = {
      .atlasSize = 4096,
      .cardTexelsAcross = 512.0f,
      .radiosityTexelsPerFrame = 1024 * kBlock,
-     // Probes every 6 px: at medium's 8 px, high's twice the rays a probe bought no accuracy
-     // once the outlier clamp bounds each ray alike (docs/gi.md, energy 36.).
+     // Probes every 6 px: at medium's 8 px, once the outlier clamp bounds each ray alike, high's
+     // twice the rays a probe left cornell_box no more accurate than medium (docs/gi.md, energy 36.).
      .probeSpacing = 6,
      .raysPerProbe = 128,
      .probeHistoryBlend = 0.1f,
