@@ -73,7 +73,21 @@ expect_match(size "${ERR}" "small\\.exr is 32x24")
 run(1 unwritable compare "${DIR}/ref.exr" "${DIR}/test.exr" --heatmap "${DIR}/no/such/dir/diff.png")
 expect_match(unwritable "${ERR}" "diff\\.png")
 
-# 5. Usage errors: exit 2.
+# 5. --exact V: the reference is constant radiance V. Against its own value a flat image is exact;
+# against 2.5 every channel is off by 0.5: relMSE 0.25 / (6.25 + 0.01).
+run(0 exact_same compare --exact 2 "${DIR}/flat.exr")
+expect_match(exact_same "${OUT}" "relMSE +0 ")
+expect_match(exact_same "${OUT}" "exact 2 \\(reference\\)")
+run(0 exact_off compare --exact 2.5 "${DIR}/flat.exr")
+expect_match(exact_off "${OUT}" "relMSE +0\\.039936")
+expect_match(exact_off "${OUT}" "mean +reference \\(2\\.5, 2\\.5, 2\\.5\\), test \\(2, 2, 2\\)")
+run(2 exact_two_images compare --exact 2 "${DIR}/ref.exr" "${DIR}/flat.exr")
+expect_match(exact_two_images "${ERR}" "takes one image")
+run(2 exact_negative compare --exact -1 "${DIR}/flat.exr")
+expect_match(exact_negative "${ERR}" "--exact: -1")
+run(2 exact_nan compare --exact nan "${DIR}/flat.exr")
+
+# 6. Usage errors: exit 2.
 run(2 one_arg compare "${DIR}/ref.exr")
 run(2 bad_ppd compare "${DIR}/ref.exr" "${DIR}/test.exr" --ppd 0)
 run(2 bad_flag compare "${DIR}/ref.exr" "${DIR}/test.exr" --heat)

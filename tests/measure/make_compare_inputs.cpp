@@ -2,6 +2,7 @@
 //   ref.exr   64x48 smooth HDR gradient with a bright spot (float)
 //   test.exr  ref with a noisy patch and a shifted colour (half, plus a "variance" channel)
 //   nan.exr   ref with one NaN and one +Inf pixel
+//   flat.exr  64x48 of radiance 2 in R, G, B (for --exact)
 //   small.exr 32x24 (a size mismatch)
 #include "gi/image/exr.h"
 
@@ -62,5 +63,13 @@ int main(int argc, char** argv) {
     lumina::image::writeExr(dir / "nan.exr", bad);
 
     lumina::image::writeExr(dir / "small.exr", gradient(32, 24));
+
+    Image flat = Image::rgb(64, 48);
+    for (uint32_t y = 0; y < 48; ++y) {
+        for (uint32_t x = 0; x < 64; ++x) {
+            flat.setRgb(x, y, {2.0f, 2.0f, 2.0f});
+        }
+    }
+    lumina::image::writeExr(dir / "flat.exr", flat);
     return 0;
 }
