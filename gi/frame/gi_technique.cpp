@@ -80,6 +80,7 @@ GiSceneSettings giScenePreset(const Preset& knobs, const scene::Scene& scene) {
     s.cache.minPaddingUnits = largest / float(s.sdf.mesh.resolution);
     s.lighting.schedule.tilesPerUpdate =
         std::max(1u, knobs.radiosityTexelsPerFrame / (surface_cache::kTileSize * surface_cache::kTileSize));
+    s.lighting.schedule.tolerance = knobs.radiosityTolerance;
     return s;
 }
 

@@ -18,6 +18,10 @@ constexpr Preset kPresets[] = {
      .atlasSize = 2048,
      .cardTexelsAcross = 128.0f,
      .radiosityTexelsPerFrame = 64 * kBlock,
+     // The light the radiosity leaves out when it stops, maxAlbedo^bounces: each preset leaves
+     // less. With one tolerance, high's finer cards lost 0.06 % more than medium's in
+     // furnace_0.99 and high was the less accurate (docs/gi.md, energy 37.).
+     .radiosityTolerance = 0.002f,
      .probeSpacing = 16,
      .raysPerProbe = 32,
      .probeHistoryBlend = 0.15f,
@@ -33,6 +37,7 @@ constexpr Preset kPresets[] = {
      .atlasSize = 4096,
      .cardTexelsAcross = 256.0f,
      .radiosityTexelsPerFrame = 256 * kBlock,
+     .radiosityTolerance = 0.0015f,
      .probeSpacing = 8,
      .raysPerProbe = 64,
      .probeHistoryBlend = 0.1f,
@@ -48,6 +53,7 @@ constexpr Preset kPresets[] = {
      .atlasSize = 4096,
      .cardTexelsAcross = 512.0f,
      .radiosityTexelsPerFrame = 1024 * kBlock,
+     .radiosityTolerance = 0.0005f,
      // Probes every 6 px: at medium's 8 px, once the outlier clamp bounds each ray alike, high's
      // twice the rays a probe left cornell_box no more accurate than medium (docs/gi.md, energy 36.).
      .probeSpacing = 6,

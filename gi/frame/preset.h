@@ -24,6 +24,8 @@ struct Preset {
     uint32_t atlasSize;               // surface-cache atlas side (texels)
     float cardTexelsAcross;           // card texels across the detail extent (gi_technique.h)
     uint32_t radiosityTexelsPerFrame; // radiosity budget: atlas texels updated per frame
+    float radiosityTolerance;         // radiosity stops once a further bounce adds less than this
+                                      // share of the light (radiosity_schedule.h)
     uint32_t probeSpacing;            // pixels per screen-probe edge
     uint32_t raysPerProbe;            // screen-probe rays
     float probeHistoryBlend;          // weight of the new frame in the probe history

@@ -96,6 +96,7 @@ TEST(Presets, GetDearerFromLowToHigh) {
         EXPECT_LE(cheaper.atlasSize, dearer.atlasSize) << names[i];
         EXPECT_LT(cheaper.cardTexelsAcross, dearer.cardTexelsAcross) << names[i];
         EXPECT_LT(cheaper.radiosityTexelsPerFrame, dearer.radiosityTexelsPerFrame) << names[i];
+        EXPECT_GT(cheaper.radiosityTolerance, dearer.radiosityTolerance) << names[i];
         EXPECT_GE(cheaper.probeSpacing, dearer.probeSpacing) << names[i];
         EXPECT_LT(cheaper.raysPerProbe, dearer.raysPerProbe) << names[i];
         EXPECT_LT(cheaper.shGridProbesPerAxis, dearer.shGridProbesPerAxis) << names[i];

@@ -136,7 +136,7 @@ TEST_P(SurfaceCacheFurnaceGpu, Rho095ConvergesToTheAnalyticRadiance) {
     expectConverged(runFurnace(device(), shaders(), "furnace_0.95", 0.95f));
 }
 
-// rho = 0.99 needs 619 bounces (the cap, 640, allows them), an albedo dithered between its two
+// rho = 0.99 needs 619 bounces (the cap, 768, allows them), an albedo dithered between its two
 // neighbouring halves (0.989746 alone gives 97.5) and unbiased half rounding in the loop (nearest
 // rounding stalled near 94.5): docs/gi.md, energy. Measured on lavapipe: -0.28 %, worst texel
 // 0.75 % (-2.87 % / 4.06 % while the lookups that turn the normal to face the ray read zero at
