@@ -13,8 +13,10 @@ void ProbeTemporalPass::record(FrameContext& frame, const ScreenProbeView& view)
         .read(2, r.frameRadiance)
         .read(3, r.history[view.previous()])
         .read(4, r.probeAge[view.previous()])
+        .read(5, r.unclamped[view.previous()])
         .write(0, r.history[view.current])
         .write(1, r.probeAge[view.current])
+        .write(2, r.unclamped[view.current])
         .dispatch(view.groupsX(), view.groupsY());
 }
 

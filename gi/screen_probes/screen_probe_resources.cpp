@@ -47,6 +47,7 @@ ScreenProbeResources ScreenProbeResources::create(rhi::IDevice& device, uint32_t
         r.probes[i] = structured(device, r.probeCount, sizeof(gpu::ScreenProbe), "probes" + half);
         r.history[i] = structured(device, texels, sizeof(gpu::float4), "radiance history" + half);
         r.probeAge[i] = structured(device, r.probeCount, sizeof(uint32_t), "probe age" + half);
+        r.unclamped[i] = structured(device, texels, sizeof(float), "unclamped luminance" + half);
         r.screenIrradiance[i] =
             storage2d(device, rhi::Format::RGBA16_FLOAT, width, height, "screen irradiance" + half);
         r.screenPosition[i] =

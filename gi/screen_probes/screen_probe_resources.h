@@ -17,21 +17,23 @@ struct ScreenProbeResources {
     uint32_t probeCount = 0;
     uint32_t raysPerProbe = 0;
 
-    rhi::BufferHandle constants;               // ScreenProbeConstants
-    std::array<rhi::BufferHandle, 2> probes;   // ScreenProbe[probeCount], this frame's and last frame's
-    rhi::BufferHandle brdfPdf;                 // float[probeCount x 64]: texel probabilities
-    rhi::BufferHandle lightingPdf;             // float[probeCount x 64]
-    rhi::BufferHandle rays;                    // ProbeRay[probeCount x raysPerProbe]
-    rhi::BufferHandle hits;                    // SdfHit[probeCount x raysPerProbe]
-    rhi::BufferHandle nearField;               // float4[probeCount x raysPerProbe]: near-field radiance, a:
-                                               // LUMINA_SP_NEAR_* (written only when the near field runs)
-    rhi::BufferHandle rayRadiance;             // float4[probeCount x raysPerProbe]
-    rhi::BufferHandle frameRadiance;           // float4[probeCount x 64]: this frame's composite
-    std::array<rhi::BufferHandle, 2> history;  // float4[probeCount x 64]: accumulated radiance
-    std::array<rhi::BufferHandle, 2> probeAge; // uint[probeCount]: frames of history (probe_temporal)
-    rhi::BufferHandle filtered;                // float4[probeCount x 64]: after the spatial filter
-    rhi::BufferHandle sh;                      // float4[probeCount x 9]: rgb per SH coefficient
-    rhi::TextureHandle irradiance;             // RGBA16F atlas of bordered octahedral tiles
+    rhi::BufferHandle constants;                // ScreenProbeConstants
+    std::array<rhi::BufferHandle, 2> probes;    // ScreenProbe[probeCount], this frame's and last frame's
+    rhi::BufferHandle brdfPdf;                  // float[probeCount x 64]: texel probabilities
+    rhi::BufferHandle lightingPdf;              // float[probeCount x 64]
+    rhi::BufferHandle rays;                     // ProbeRay[probeCount x raysPerProbe]
+    rhi::BufferHandle hits;                     // SdfHit[probeCount x raysPerProbe]
+    rhi::BufferHandle nearField;                // float4[probeCount x raysPerProbe]: near-field radiance, a:
+                                                // LUMINA_SP_NEAR_* (written only when the near field runs)
+    rhi::BufferHandle rayRadiance;              // float4[probeCount x raysPerProbe]
+    rhi::BufferHandle frameRadiance;            // float4[probeCount x 64]: this frame's composite
+    std::array<rhi::BufferHandle, 2> history;   // float4[probeCount x 64]: accumulated radiance
+    std::array<rhi::BufferHandle, 2> probeAge;  // uint[probeCount]: frames of history (probe_temporal)
+    std::array<rhi::BufferHandle, 2> unclamped; // float[probeCount x 64]: the history's luminance before
+                                                // the outlier clamp, the clamp's reference
+    rhi::BufferHandle filtered;                 // float4[probeCount x 64]: after the spatial filter
+    rhi::BufferHandle sh;                       // float4[probeCount x 9]: rgb per SH coefficient
+    rhi::TextureHandle irradiance;              // RGBA16F atlas of bordered octahedral tiles
     rhi::TextureHandle gather; // RGBA16F full resolution: irradiance, before the screen filter
     std::array<rhi::TextureHandle, 2> screenIrradiance; // RGBA16F: the result; a: frames accumulated
     std::array<rhi::TextureHandle, 2> screenPosition;   // RGBA32F: GBuffer position the result was made at

@@ -14,17 +14,22 @@ int historyProbe(ScreenProbe current) {
     return candidate >= 0 && historyMatches(current, gPreviousProbes[candidate]) ? candidate : -1;
 }
 
-// Texel t of the history of `current` (frame f): historyProbe's, looked up in the same world
-// direction. Zero (weight 0) where there is none: no history, a probe that moved, a direction below
-// the old probe's plane.
-float4 historyTexel(ScreenProbe current, ProbeFrame f, uint t) {
+// Where texel t of the history of `current` (frame f) lies in last frame's buffers: historyProbe's
+// texel in the same world direction; -1 where there is none (no history, a probe that moved, a
+// direction below the old probe's plane).
+int historyTexelIndex(ScreenProbe current, ProbeFrame f, uint t) {
     const int candidate = historyProbe(current);
     if (candidate < 0) {
-        return float4(0.0, 0.0, 0.0, 0.0);
+        return -1;
     }
     const int texel = texelInFrame(probeFrame(gPreviousProbes[candidate].normal.xyz), texelDirection(f, t));
-    return texel >= 0 ? gPreviousHistory[uint(candidate) * LUMINA_SP_PROBE_TEXELS + uint(texel)]
-                      : float4(0.0, 0.0, 0.0, 0.0);
+    return texel >= 0 ? candidate * int(LUMINA_SP_PROBE_TEXELS) + texel : -1;
+}
+
+// That texel's radiance history; zero (weight 0) where there is none.
+float4 historyTexel(ScreenProbe current, ProbeFrame f, uint t) {
+    const int index = historyTexelIndex(current, f, t);
+    return index >= 0 ? gPreviousHistory[uint(index)] : float4(0.0, 0.0, 0.0, 0.0);
 }
 
 #endif

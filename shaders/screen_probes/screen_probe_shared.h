@@ -29,6 +29,20 @@ LUMINA_GPU_NAMESPACE_BEGIN
 // The most frames of history a probe's age counts (probe_temporal.hlsl): the spatial filter's share
 // (1 - probeHistoryBlend)^age is below 1e-8 long before it.
 #define LUMINA_SP_MAX_PROBE_AGE 1024u
+// The outlier clamp's ceiling (probe_temporal.hlsl): outlierClamp x max(this share of the texel's
+// unclamped mean, the probe's mean of them). A bias knob like outlierClamp itself, measured against
+// the references (docs/gi.md, energy 40.): at 1 cornell_box read 3.0 % bright at high on the H200
+// (256^2) and 3.6 % at medium in the lavapipe test (128^2), at 0.75 2.5 % and 3.25 %, at 0.5
+// sunlit_rooms 3.0 % dark at low; 0.6 keeps every box and room scene within 2.8 % on the H200 and
+// cornell_box within 2.9 % in the test.
+#define LUMINA_SP_CLAMP_TEXEL_SHARE 0.6f
+// A value enters the unclamped mean at most this many times the ceiling: one poisoned frame (a
+// light 1e6 times too bright) must not lift the ceiling for a hundred frames, nor a firefly for ten.
+// Measured on lavapipe (docs/gi.md, energy 40.): at 16 the static Cornell box flickered (frame to
+// frame relMSE up to 1.27e-3); at 2 the mean's own cap brought the dark states back (two runs 30 %
+// apart after 150 frames of a flickering sky); at 4 steady (6.1e-4) and both runs the same within
+// 300 frames.
+#define LUMINA_SP_UNCLAMPED_CAP 4.0f
 
 // ScreenProbe::info.x
 // World boxes where the scene changed since the last frame (a moved object's old and new place, a
