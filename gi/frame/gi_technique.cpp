@@ -85,19 +85,20 @@ GiSceneSettings giScenePreset(const Preset& knobs, const scene::Scene& scene) {
 }
 
 LumenSettings lumenPreset(const Preset& knobs, const scene::Scene& scene) {
-    const float largest = giSceneExtent(scene);
     LumenSettings s;
     static_cast<GiSceneSettings&>(s) = giScenePreset(knobs, scene);
 
-    // Near-field hits read their cards, far ones the coarse voxel lighting. Measured on lavapipe
-    // against 4096-spp references (docs/gi.md): a tenth of the scene's extent gave the lowest
-    // error in cornell_box_point (relMSE 0.0108; the gather's default, a quarter of the global
-    // SDF diagonal, 0.025, a tenth too bright) and open_top_box (0.040 against 0.059).
-    s.probes.nearFieldDistance = 0.1f * largest;
+    // Every ray traced through the mesh SDFs and read from the cards, the far field skipped. The
+    // far field's cones saw past the atrium's columns (3.1 % bright at low with the near field a
+    // tenth of the extent) and covered the near field's deficits in the room scenes; with those
+    // fixed (docs/gi.md, energy 33.-41.) the whole near field is the more accurate and, without the
+    // cones, the cheaper.
+    s.probes.nearFieldDistance = ScreenProbeSettings::kNearFieldWholeTrace;
     s.probes.probeSpacing = knobs.probeSpacing;
     s.probes.raysPerProbe = knobs.raysPerProbe;
     s.probes.probeHistoryBlend = knobs.probeHistoryBlend;
     s.probes.screenHistoryBlend = knobs.screenHistoryBlend;
+    s.probes.outlierClampTexelShare = knobs.outlierClampTexelShare;
     return s;
 }
 

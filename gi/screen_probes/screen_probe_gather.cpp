@@ -100,6 +100,7 @@ void ScreenProbeGather::uploadConstants(rhi::ICommandList& commands, const Scree
     c.nearFieldDistance = range.nearField;
     c.probeHistoryBlend = settings_.probeHistoryBlend;
     c.outlierClamp = settings_.outlierClamp;
+    c.outlierClampTexelShare = settings_.outlierClampTexelShare;
     c.screenHistoryBlend = settings_.screenHistoryBlend;
     c.lightingPdfFloor = settings_.lightingPdfFloor;
     c.filterPlaneScale = settings_.filterPlaneScale;

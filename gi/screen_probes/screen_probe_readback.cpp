@@ -84,14 +84,16 @@ std::vector<std::filesystem::path> dumpScreenProbeBuffers(rhi::IDevice& device,
 
     const auto rays = rhi::readBufferAs<gpu::ProbeRay>(device, *r.rays);
     const auto hits = rhi::readBufferAs<gpu::SdfHit>(device, *r.hits);
-    std::vector<gpu::float4> directions, records;
+    std::vector<gpu::float4> directions, records, hitPoints;
     for (size_t i = 0; i < rays.size(); ++i) {
         directions.push_back(rays[i].directionAndWeight);
+        hitPoints.push_back(hits[i].positionAndT);
         records.emplace_back(hits[i].positionAndT.w, float(hits[i].ids.z), float(hits[i].ids.w),
                              hits[i].normalAndCoverage.w);
     }
     exr("ray_directions", probeRayImage(directions, r.raysPerProbe, gw, gh));
     exr("ray_hits", probeRayImage(records, r.raysPerProbe, gw, gh));
+    exr("ray_hit_points", probeRayImage(hitPoints, r.raysPerProbe, gw, gh)); // world position, t
     if (gather.nearFieldTraced()) {
         exr("near_field", probeRayImage(float4s(r.nearField), r.raysPerProbe, gw, gh));
     }

@@ -50,6 +50,7 @@ void ScreenProbeSettings::validate() const {
     checkRange("originBiasVoxels", originBiasVoxels, 0.0f, 16.0f, false, "0 .. 16 voxels");
     checkRange("probeHistoryBlend", probeHistoryBlend, 0.0f, 1.0f, true, "0 < blend <= 1");
     checkRange("outlierClamp", outlierClamp, 1.0f, 1e30f, false, ">= 1");
+    checkRange("outlierClampTexelShare", outlierClampTexelShare, 0.0f, 1e30f, true, "> 0");
     checkRange("historyPlaneTolerance", historyPlaneTolerance, 0.0f, 1.0f, true, "0 < tolerance <= 1");
     checkRange("historyNormalTolerance", historyNormalTolerance, -1.0f, 1.0f, false, "a cosine, -1 .. 1");
     checkRange("filterPlaneScale", filterPlaneScale, 0.0f, 1e30f, true, "> 0");

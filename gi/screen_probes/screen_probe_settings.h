@@ -37,9 +37,18 @@ struct ScreenProbeSettings {
     // far field it replaces and brings the gather's mean from 57% to 80% of the path tracer's
     // (the surface cache's own: 76%; docs/screen_probes.md).
     static constexpr float kNearFieldGridFraction = 0.25f;
+    // A near field longer than any trace: every ray a mesh-SDF trace read from the cards, the far
+    // field skipped (the presets' choice since docs/gi.md, energy 41.).
+    static constexpr float kNearFieldWholeTrace = 1e30f;
 
-    float probeHistoryBlend = 0.1f;      // weight of the new frame in the probe radiance history
-    float outlierClamp = 4.0f;           // new radiance clamped to this x max(texel history, probe's mean)
+    float probeHistoryBlend = 0.1f; // weight of the new frame in the probe radiance history
+    // New radiance is clamped to the factor 1 + (outlierClamp - 1) / (rays a texel) times
+    // max(outlierClampTexelShare x the texel's unclamped mean, the probe's mean of them)
+    // (probe_temporal.hlsl). The share is a bias knob like outlierClamp itself, measured against
+    // the references (docs/gi.md, energy 40. and 41.): at 1 cornell_box read 3.0 % bright at high on
+    // the H200 (256^2), at 0.5 sunlit_rooms 3.0 % dark at low; the presets set it.
+    float outlierClamp = 4.0f;
+    float outlierClampTexelShare = 0.6f;
     float historyPlaneTolerance = 0.02f; // history kept while the old probe lies this close (x view depth)
                                          // to the new one's plane
     float historyNormalTolerance = 0.9f; // ... and their normals' cosine is at least this

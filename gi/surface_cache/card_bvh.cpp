@@ -66,8 +66,8 @@ struct Builder {
 };
 
 void consider(const gpu::SurfaceCard& card, uint32_t index, const glm::vec3& p, const glm::vec3& n,
-              uint32_t instance, CardOwner& best) {
-    if (!gpu::cardContains(card, p)) {
+              uint32_t instance, const glm::vec3& seenFrom, CardOwner& best) {
+    if (!gpu::cardContains(card, p) || !gpu::cardFacesRay(card, seenFrom)) {
         return;
     }
     const float score = gpu::cardOwnerScoreOnInstance(card, p, n, instance);
@@ -106,7 +106,7 @@ CardBvh buildCardBvh(std::span<const gpu::SurfaceCard> cards) {
 }
 
 CardOwner findCardOwner(const CardBvh& bvh, std::span<const gpu::SurfaceCard> cards, const glm::vec3& p,
-                        const glm::vec3& n, uint32_t instance) {
+                        const glm::vec3& n, uint32_t instance, const glm::vec3& seenFrom) {
     CardOwner best;
     std::vector<uint32_t> stack = {0u};
     while (!stack.empty()) {
@@ -122,17 +122,17 @@ CardOwner findCardOwner(const CardBvh& bvh, std::span<const gpu::SurfaceCard> ca
             continue;
         }
         for (uint32_t i = 0; i < count; ++i) {
-            consider(cards[node.cards[int(i)]], node.cards[int(i)], p, n, instance, best);
+            consider(cards[node.cards[int(i)]], node.cards[int(i)], p, n, instance, seenFrom, best);
         }
     }
     return best;
 }
 
 CardOwner findCardOwnerBruteForce(std::span<const gpu::SurfaceCard> cards, const glm::vec3& p,
-                                  const glm::vec3& n, uint32_t instance) {
+                                  const glm::vec3& n, uint32_t instance, const glm::vec3& seenFrom) {
     CardOwner best;
     for (uint32_t i = 0; i < cards.size(); ++i) {
-        consider(cards[i], i, p, n, instance, best);
+        consider(cards[i], i, p, n, instance, seenFrom, best);
     }
     return best;
 }

@@ -12,7 +12,8 @@
 // The owner of p for a unit normal n is the card, among those whose padded bounds hold p, with
 // the highest cardOwnerScoreOnInstance (card_bvh_shared.h: normal agreement less distance outside
 // the card's surface box, the cards of the instance an SDF hit names first), the lower index on
-// equal scores; none when no card's bounds hold p.
+// equal scores, skipping cards that face away from the ray that found p; none when no card's
+// bounds hold p.
 // findCardOwner here and in card_bvh_traversal.hlsli apply that rule to the same floats.
 #include "shaders/surface_cache/card_bvh_shared.h"
 
@@ -38,11 +39,15 @@ struct CardOwner {
 };
 
 // instance: the scene instance the point lies on, when known (an SDF hit), else LUMINA_ANY_INSTANCE.
+// seenFrom: the direction of the ray that found p (the shaders' sdfSeenFrom); cards facing away
+// from it are skipped (gpu::cardFacesRay). Zero: none skipped.
 CardOwner findCardOwner(const CardBvh& bvh, std::span<const gpu::SurfaceCard> cards, const glm::vec3& p,
-                        const glm::vec3& n, uint32_t instance = LUMINA_ANY_INSTANCE);
+                        const glm::vec3& n, uint32_t instance = LUMINA_ANY_INSTANCE,
+                        const glm::vec3& seenFrom = glm::vec3(0.0f));
 // The same rule over every card, for tests.
 CardOwner findCardOwnerBruteForce(std::span<const gpu::SurfaceCard> cards, const glm::vec3& p,
-                                  const glm::vec3& n, uint32_t instance = LUMINA_ANY_INSTANCE);
+                                  const glm::vec3& n, uint32_t instance = LUMINA_ANY_INSTANCE,
+                                  const glm::vec3& seenFrom = glm::vec3(0.0f));
 
 // Node fields, decoded from the GPU layout.
 inline uint32_t nodeCardCount(const gpu::CardBvhNode& node) {

@@ -35,7 +35,7 @@ RWStructuredBuffer<float4> gRayData : register(u0);
 // hit instance's cards first), or the voxel lighting where no card covers it.
 float3 hitRadiance(float3 p, float3 n, float3 seenFrom, uint instance, bool nearField) {
     if (nearField) {
-        const CardOwner owner = findCardOwner(p, n, instance);
+        const CardOwner owner = findCardOwner(p, n, instance, seenFrom);
         if (owner.card != LUMINA_NO_CARD) {
             const float4 card = cardRadiance(gCards[owner.card], p);
             if (card.a > 0.0) {

@@ -1,22 +1,21 @@
 // lumina-kernel: cs main
-// Pass 8, temporal accumulation of probe radiance. The history texel is found like the lighting
-// PDF's (reprojected probe, same surface, same world direction); a probe that moved loses it.
-// Numerator and denominator of each texel's weighted mean are blended exponentially,
+// Pass 8, temporal accumulation of probe radiance. The history texel is found like the lighting PDF's
+// (reprojected probe, same surface, same world direction); a probe that moved loses it. Numerator and
+// denominator of each texel's weighted mean are blended exponentially,
 //     W' = (1 - a) W + a w,   L' = ((1 - a) W L + a w x) / W'   (a = probeHistoryBlend, about 10% new),
-// so early frames average like a running mean and texels no ray reached keep their radiance. A new
-// value brighter than outlierClamp x max(0.6 of the texel's unclamped mean, the probe's mean of them)
-// is scaled down to that (a single bright ray must not linger for ten frames; with k > 1 rays a texel
-// the factor is 1 + (outlierClamp - 1) / k, the same bound on one ray). The unclamped mean is the
-// same weighted mean of the values before the clamp, kept beside the history: a ceiling made from
-// the clamped history itself rises only with what it lets in, so a texel that once read dark kept
-// clamping light that one that read bright let in, for good (docs/screen_probes.md). The factor
-// trades bias for steadiness: a light smaller than a texel reads several times its texel's mean
-// every frame a ray hits it, so 2 took a quarter of the Cornell box floor's light; clamping against
-// the probe's brightest texel instead kept all of it but let the image flicker ten times more. L' is
-// a convex combination of inputs, so accumulation never exceeds the largest input; non-finite
-// results are written as empty texels, so NaN and Inf never enter history. The probe's age, the
-// frames of history it continues (0 for a new probe, scaled down with the weight a change region
-// takes away), goes to gProbeAge for the spatial filter. One group per probe, one thread per texel.
+// so early frames average like a running mean and texels no ray reached keep their radiance. A new value
+// brighter than outlierClamp x max(the preset's share of the texel's unclamped mean, the probe's mean of
+// them) is scaled down to that (a single bright ray must not linger for ten frames; with k > 1 rays a texel
+// the factor is 1 + (outlierClamp - 1) / k, the same bound on one ray). The unclamped mean is the same
+// weighted mean of the values before the clamp, kept beside the history: a ceiling made from the clamped
+// history itself rises only with what it lets in, so a texel that once read dark kept clamping light that one
+// that read bright let in, for good (docs/screen_probes.md). The factor trades bias for steadiness: a light
+// smaller than a texel reads several times its texel's mean every frame a ray hits it, so 2 took a quarter of
+// the Cornell box floor's light; clamping against the probe's brightest texel instead kept all of it but let
+// the image flicker ten times more. L' is a convex combination of inputs, so accumulation never exceeds the
+// largest input; non-finite results are written as empty texels, so NaN and Inf never enter history. The
+// probe's age, the frames of history it continues (0 for a new probe, scaled down with the weight a change
+// region takes away), goes to gProbeAge for the spatial filter. One group per probe, one thread per texel.
 #include "screen_probes/screen_probe_common.hlsli"
 
 StructuredBuffer<ScreenProbe> gProbes : register(t0);
@@ -75,7 +74,7 @@ groupshared float gsSolidAngle[LUMINA_SP_PROBE_TEXELS];
     // clamp, and was less accurate than medium (docs/gi.md, energy 36.).
     const float raysPerTexel = max(float(gSp.raysPerProbe) / float(LUMINA_SP_PROBE_TEXELS), 1.0);
     const float factor = 1.0 + (gSp.outlierClamp - 1.0) / raysPerTexel;
-    const float limit = factor * max(LUMINA_SP_CLAMP_TEXEL_SHARE * unclamped, meanLuminance);
+    const float limit = factor * max(gSp.outlierClampTexelShare * unclamped, meanLuminance);
     const float l = luminance(x.rgb);
     const float lUnclamped = limit > 0.0 ? min(l, LUMINA_SP_UNCLAMPED_CAP * limit) : l;
     if (limit > 0.0 && l > limit) {

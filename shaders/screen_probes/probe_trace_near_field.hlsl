@@ -32,14 +32,14 @@ float4 nearFieldRadiance(SdfHit hit, float3 direction) {
     const float3 p = hit.positionAndT.xyz;
     // The side the ray came from, also on open (unsigned) surfaces (sdfFacingNormal).
     const float3 n = sdfFacingNormal(hit.normalAndCoverage.xyz, direction, hit.positionAndT.w);
-    const CardOwner owner = findCardOwner(p, n, hit.ids.x);
+    const float3 seenFrom = sdfSeenFrom(direction, hit.positionAndT.w);
+    const CardOwner owner = findCardOwner(p, n, hit.ids.x, seenFrom);
     if (owner.card != LUMINA_NO_CARD) {
         const float4 card = cardRadiance(gCards[owner.card], p);
         if (card.a > 0.0) {
             return float4(card.rgb, float(LUMINA_SP_NEAR_CARD));
         }
     }
-    const float3 seenFrom = sdfSeenFrom(direction, hit.positionAndT.w);
     return float4(sampleVoxelLighting(gSp.voxelGrid, p, n, seenFrom), float(LUMINA_SP_NEAR_VOXEL));
 }
 

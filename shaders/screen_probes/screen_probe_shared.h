@@ -29,13 +29,6 @@ LUMINA_GPU_NAMESPACE_BEGIN
 // The most frames of history a probe's age counts (probe_temporal.hlsl): the spatial filter's share
 // (1 - probeHistoryBlend)^age is below 1e-8 long before it.
 #define LUMINA_SP_MAX_PROBE_AGE 1024u
-// The outlier clamp's ceiling (probe_temporal.hlsl): outlierClamp x max(this share of the texel's
-// unclamped mean, the probe's mean of them). A bias knob like outlierClamp itself, measured against
-// the references (docs/gi.md, energy 40.): at 1 cornell_box read 3.0 % bright at high on the H200
-// (256^2) and 3.6 % at medium in the lavapipe test (128^2), at 0.75 2.5 % and 3.25 %, at 0.5
-// sunlit_rooms 3.0 % dark at low; 0.6 keeps every box and room scene within 2.8 % on the H200 and
-// cornell_box within 2.9 % in the test.
-#define LUMINA_SP_CLAMP_TEXEL_SHARE 0.6f
 // A value enters the unclamped mean at most this many times the ceiling: one poisoned frame (a
 // light 1e6 times too bright) must not lift the ceiling for a hundred frames, nor a firefly for ten.
 // Measured on lavapipe (docs/gi.md, energy 40.): at 16 the static Cornell box flickered (frame to
@@ -139,7 +132,8 @@ struct ScreenProbeConstants {
     VoxelGridInfo voxelGrid;      // the surface cache's voxel lighting (near-field fallback; far hits with
                                   // LUMINA_SP_FLAG_VOXEL_GRID); zero without a surface cache
     uint changeRegionCount;       // regions in use, at most LUMINA_SP_MAX_CHANGE_REGIONS
-    uint changePadding0;
+    float outlierClampTexelShare; // the outlier clamp's share of a texel's unclamped mean
+                                  // (ScreenProbeSettings), here to keep the layout
     uint changePadding1;
     uint changePadding2;
     ChangeRegion changeRegions[LUMINA_SP_MAX_CHANGE_REGIONS];

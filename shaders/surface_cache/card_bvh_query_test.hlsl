@@ -24,7 +24,8 @@ RWStructuredBuffer<CardBvhQueryResult> gResults : register(u0);
         return;
     }
     CardBvhQuery query = gQueries[id.x];
-    CardOwner owner = findCardOwner(query.position.xyz, query.normal.xyz, asuint(query.position.w));
+    CardOwner owner =
+        findCardOwner(query.position.xyz, query.normal.xyz, asuint(query.position.w), query.seenFrom.xyz);
     CardBvhQueryResult result;
     result.ownerAndScore = float4(asfloat(owner.card), owner.score, 0.0f, 0.0f);
     gResults[id.x] = result;

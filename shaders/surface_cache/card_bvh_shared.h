@@ -65,6 +65,17 @@ LUMINA_INLINE float cardOwnerScore(SurfaceCard card, float3 p, float3 n) {
     return dot(normal, n) - sqrt(dot(outside, outside)) / padding;
 }
 
+// Whether a ray travelling along `seenFrom` can see the card's side of its surface: only a side
+// that faces it (zero seenFrom: any side, for a query with no ray, or a ray that stopped where it
+// started). The owner score alone cannot tell: at a hit within a voxel of an open surface's edge,
+// where two zero-thickness walls meet, the unsigned field's gradient points along the wall, the
+// score's cosines against the wall's two cards are then small and of either sign, and the sealed
+// box's probes read its sky-lit outside (docs/gi.md, energy 41.).
+LUMINA_INLINE bool cardFacesRay(SurfaceCard card, float3 seenFrom) {
+    float3 normal = float3(card.normalAndPadding.x, card.normalAndPadding.y, card.normalAndPadding.z);
+    return dot(normal, seenFrom) <= 0.0f;
+}
+
 // cardOwnerScore for a point that an SDF trace found on `instance` (LUMINA_ANY_INSTANCE: not
 // known). The trace knows which mesh it hit, and that mesh's cards hold its light: where two
 // instances' surfaces coincide (an emissive panel filling a hole in the ceiling, facing the same

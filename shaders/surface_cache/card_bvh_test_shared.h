@@ -9,6 +9,7 @@ LUMINA_GPU_NAMESPACE_BEGIN
 struct CardBvhQuery {
     float4 position; // xyz: world point; w: asfloat(instance), LUMINA_ANY_INSTANCE for none
     float4 normal;   // xyz: unit normal; w: 0
+    float4 seenFrom; // xyz: the direction of the ray that found the point, or 0; w: 0
 };
 
 struct CardBvhQueryResult {
@@ -22,7 +23,7 @@ struct CardBvhQueryConstants {
     uint pad2;
 };
 
-LUMINA_STATIC_ASSERT_SIZE(CardBvhQuery, 32);
+LUMINA_STATIC_ASSERT_SIZE(CardBvhQuery, 48);
 LUMINA_STATIC_ASSERT_SIZE(CardBvhQueryResult, 16);
 LUMINA_STATIC_ASSERT_SIZE(CardBvhQueryConstants, 16);
 

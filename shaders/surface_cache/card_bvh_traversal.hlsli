@@ -3,7 +3,8 @@
 // Finds the card that owns a point (an SDF hit): the GPU twin of findCardOwner in
 // gi/surface_cache/card_bvh.cpp. Visits every node whose box holds the point (a point query
 // cannot stop early: a later card may fit better), scores each containing card with
-// cardOwnerScoreOnInstance (card_bvh_shared.h) and keeps the highest; equal scores go to the
+// cardOwnerScoreOnInstance (card_bvh_shared.h) and keeps the highest (among the cards that face
+// the ray, cardFacesRay); equal scores go to the
 // lower index.
 //
 // The includer says where nodes and cards come from:
@@ -25,8 +26,10 @@ struct CardOwner {
 };
 
 // p: world position; n: unit surface normal at p (or the reversed ray direction); instance: the
-// scene instance an SDF hit names (SdfHit.ids.x), whose cards come first, or LUMINA_ANY_INSTANCE.
-CardOwner findCardOwner(float3 p, float3 n, uint instance) {
+// scene instance an SDF hit names (SdfHit.ids.x), whose cards come first, or LUMINA_ANY_INSTANCE;
+// seenFrom: the direction of the ray that found p (sdfSeenFrom), whose back-facing cards are
+// skipped (cardFacesRay), or zero.
+CardOwner findCardOwner(float3 p, float3 n, uint instance, float3 seenFrom) {
     CardOwner best;
     best.card = LUMINA_NO_CARD;
     best.score = LUMINA_CARD_NO_SCORE;
@@ -53,7 +56,7 @@ CardOwner findCardOwner(float3 p, float3 n, uint instance) {
         for (uint i = 0u; i < count; ++i) {
             uint index = node.cards[i];
             SurfaceCard card = LUMINA_SURFACE_CARD(index);
-            if (!cardContains(card, p)) {
+            if (!cardContains(card, p) || !cardFacesRay(card, seenFrom)) {
                 continue;
             }
             float score = cardOwnerScoreOnInstance(card, p, n, instance);

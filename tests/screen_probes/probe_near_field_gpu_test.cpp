@@ -119,8 +119,14 @@ TEST_P(ProbeNearFieldGpuTest, NearHitsReadTheirCardsFinalLightingAndEveryOutputI
             if (glm::dot(normal, normal) == 0.0f) {
                 normal = -glm::vec3(rays[i].directionAndWeight);
             }
+            // As the kernel: the normal turned to face the ray (sdfFacingNormal), and the cards that
+            // face away from the ray skipped (sdfSeenFrom, cardFacesRay).
+            const glm::vec3 seenFrom = t > 0.0f ? glm::vec3(rays[i].directionAndWeight) : glm::vec3(0.0f);
+            if (glm::dot(normal, seenFrom) > 0.0f) {
+                normal = -normal;
+            }
             const surface_cache::CardOwner owner =
-                findCardOwner(cache.cardBvh(), cards, position, normal, hits[i].ids.x);
+                findCardOwner(cache.cardBvh(), cards, position, normal, hits[i].ids.x, seenFrom);
             if (owner.card == LUMINA_NO_CARD) {
                 ++otherOwner;
                 continue;

@@ -45,6 +45,8 @@ TEST(ScreenProbeSettings, BadValuesAreRefusedByName) {
     expectRefused([](auto& s) { s.probeHistoryBlend = 0.0f; }, "probeHistoryBlend", "0");
     expectRefused([](auto& s) { s.probeHistoryBlend = std::nanf(""); }, "probeHistoryBlend", "nan");
     expectRefused([](auto& s) { s.outlierClamp = 0.5f; }, "outlierClamp", "0.5");
+    expectRefused([](auto& s) { s.outlierClampTexelShare = 0.0f; }, "outlierClampTexelShare", "0");
+    expectRefused([](auto& s) { s.outlierClampTexelShare = std::nanf(""); }, "outlierClampTexelShare", "nan");
     expectRefused([](auto& s) { s.coneHalfAngle = -0.1f; }, "coneHalfAngle", "-0.1");
     expectRefused([](auto& s) { s.nearFieldDistance = -1.0f; }, "nearFieldDistance", "-1");
     expectRefused([](auto& s) { s.nearFieldDistance = INFINITY; }, "nearFieldDistance", "inf");

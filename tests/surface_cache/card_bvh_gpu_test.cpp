@@ -26,8 +26,8 @@ protected:
         EXPECT_LE(bvh.depth, LUMINA_CARD_BVH_STACK_SIZE);
         std::vector<gpu::CardBvhQuery> gpuQueries;
         for (const surface_cache::test::OwnerQuery& q : queries) {
-            gpuQueries.push_back(
-                {glm::vec4(q.position, gpu::asfloat(q.instance)), glm::vec4(q.normal, 0.0f)});
+            gpuQueries.push_back({glm::vec4(q.position, gpu::asfloat(q.instance)), glm::vec4(q.normal, 0.0f),
+                                  glm::vec4(q.seenFrom, 0.0f)});
         }
         auto structured = [&](const void* data, size_t count, size_t stride, const char* name) {
             return rhi::createBufferWithData(device(),
@@ -76,8 +76,9 @@ protected:
         uint32_t found = 0, nearTies = 0;
         for (uint32_t i = 0; i < count && i < gpuResults.size(); ++i) {
             const surface_cache::test::OwnerQuery& q = queries[i];
-            const CardOwner cpu = findCardOwner(bvh, cards, q.position, q.normal, q.instance);
-            EXPECT_EQ(cpu.card, findCardOwnerBruteForce(cards, q.position, q.normal, q.instance).card);
+            const CardOwner cpu = findCardOwner(bvh, cards, q.position, q.normal, q.instance, q.seenFrom);
+            EXPECT_EQ(cpu.card,
+                      findCardOwnerBruteForce(cards, q.position, q.normal, q.instance, q.seenFrom).card);
             const uint32_t gpuCard = gpu::asuint(gpuResults[i].ownerAndScore.x);
             const float gpuScore = gpuResults[i].ownerAndScore.y;
             found += cpu.card != LUMINA_NO_CARD;
@@ -96,7 +97,8 @@ protected:
                 continue;
             }
             const gpu::SurfaceCard& other = cards[gpuCard];
-            EXPECT_TRUE(gpu::cardContains(other, q.position)) << "query " << i;
+            EXPECT_TRUE(gpu::cardContains(other, q.position) && gpu::cardFacesRay(other, q.seenFrom))
+                << "query " << i;
             EXPECT_NEAR(gpu::cardOwnerScoreOnInstance(other, q.position, q.normal, q.instance), cpu.score,
                         1e-5f)
                 << "query " << i;

@@ -45,6 +45,7 @@ struct OwnerQuery {
     glm::vec3 position;
     glm::vec3 normal;
     uint32_t instance = LUMINA_ANY_INSTANCE;
+    glm::vec3 seenFrom{0.0f}; // the ray that found the point; zero: no ray
 };
 
 inline std::vector<OwnerQuery> randomQueries(const std::vector<gpu::SurfaceCard>& cards, uint32_t count,
@@ -57,6 +58,12 @@ inline std::vector<OwnerQuery> randomQueries(const std::vector<gpu::SurfaceCard>
         queries[i].normal = glm::length(n) > 1e-3f ? glm::normalize(n) : glm::vec3(0, 1, 0);
         if (i % 2 == 1) {
             queries[i].instance = rng() % (kRandomInstances + 1);
+        }
+        if (i % 3 == 2) {
+            // A third of the queries come with a ray's direction, about as often against the
+            // normal as along it: its back-facing candidates are skipped.
+            const glm::vec3 d(unit(rng) - 0.5f, unit(rng) - 0.5f, unit(rng) - 0.5f);
+            queries[i].seenFrom = glm::length(d) > 1e-3f ? glm::normalize(d) : glm::vec3(0.0f);
         }
         if (i % 4 == 0 || cards.empty()) {
             queries[i].position = glm::vec3(anywhere(rng), anywhere(rng), anywhere(rng));
