@@ -98,7 +98,6 @@ LumenSettings lumenPreset(const Preset& knobs, const scene::Scene& scene) {
     s.probes.raysPerProbe = knobs.raysPerProbe;
     s.probes.probeHistoryBlend = knobs.probeHistoryBlend;
     s.probes.screenHistoryBlend = knobs.screenHistoryBlend;
-    s.probes.outlierClampTexelShare = knobs.outlierClampTexelShare;
     return s;
 }
 

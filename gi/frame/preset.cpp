@@ -26,10 +26,6 @@ constexpr Preset kPresets[] = {
      .raysPerProbe = 32,
      .probeHistoryBlend = 0.15f,
      .screenHistoryBlend = 0.3f,
-     // At 0.6 with the near field over the whole ray, low clamped cornell_box_point's light's spot
-     // on the ceiling (4.7 % dark); at 1, every box and room scene within 2 % on the H200. Medium and
-     // high trace more rays a texel and at 1 read the rooms' excess (3.4 % bright; docs/gi.md, 41.).
-     .outlierClampTexelShare = 1.0f,
      .ddgiProbesPerAxis = 8,
      .ddgiRaysPerProbe = 96,
      .shGridProbesPerAxis = 4,
@@ -46,7 +42,6 @@ constexpr Preset kPresets[] = {
      .raysPerProbe = 64,
      .probeHistoryBlend = 0.1f,
      .screenHistoryBlend = 0.2f,
-     .outlierClampTexelShare = 0.6f,
      .ddgiProbesPerAxis = 16,
      .ddgiRaysPerProbe = 144,
      .shGridProbesPerAxis = 6,
@@ -65,7 +60,6 @@ constexpr Preset kPresets[] = {
      .raysPerProbe = 128,
      .probeHistoryBlend = 0.1f,
      .screenHistoryBlend = 0.2f,
-     .outlierClampTexelShare = 0.6f,
      .ddgiProbesPerAxis = 16,
      .ddgiRaysPerProbe = 256,
      .shGridProbesPerAxis = 8,

@@ -30,8 +30,6 @@ struct Preset {
     uint32_t raysPerProbe;            // screen-probe rays
     float probeHistoryBlend;          // weight of the new frame in the probe history
     float screenHistoryBlend;         // ... in the full-resolution temporal filter
-    float outlierClampTexelShare;     // the probe outlier clamp's share of a texel's unclamped mean
-                                      // (screen_probe_settings.h)
     // DDGI (gi/ddgi/ddgi_settings.h).
     uint32_t ddgiProbesPerAxis; // probes along each axis of a volume fitted to the scene (or a cascade)
     uint32_t ddgiRaysPerProbe;  // rays per probe and update, the fixed relocation set included

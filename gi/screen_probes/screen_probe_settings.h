@@ -46,7 +46,7 @@ struct ScreenProbeSettings {
     // max(outlierClampTexelShare x the texel's unclamped mean, the probe's mean of them)
     // (probe_temporal.hlsl). The share is a bias knob like outlierClamp itself, measured against
     // the references (docs/gi.md, energy 40. and 41.): at 1 cornell_box read 3.0 % bright at high on
-    // the H200 (256^2), at 0.5 sunlit_rooms 3.0 % dark at low; the presets set it.
+    // the H200 (256^2), at 0.5 sunlit_rooms 3.0 % dark at low.
     float outlierClamp = 4.0f;
     float outlierClampTexelShare = 0.6f;
     float historyPlaneTolerance = 0.02f; // history kept while the old probe lies this close (x view depth)

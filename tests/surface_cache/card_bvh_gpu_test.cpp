@@ -118,7 +118,9 @@ TEST_P(SurfaceCacheCardBvhGpu, RandomCardsMatchTheCpu) {
         const uint32_t found =
             checkQueries(cards, surface_cache::test::randomQueries(cards, 8192, 3 * cardCount + 1));
         if (cardCount >= 700) {
-            EXPECT_GT(found, 3500u); // most queries lie near cards: owners were exercised
+            // Most queries lie near cards, a third of them with a ray that skips the back-facing
+            // ones: owners were exercised.
+            EXPECT_GT(found, 3000u);
         } else if (cardCount == 0) {
             EXPECT_EQ(found, 0u);
         }
