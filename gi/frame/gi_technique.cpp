@@ -88,12 +88,14 @@ LumenSettings lumenPreset(const Preset& knobs, const scene::Scene& scene) {
     LumenSettings s;
     static_cast<GiSceneSettings&>(s) = giScenePreset(knobs, scene);
 
-    // Every ray traced through the mesh SDFs and read from the cards, the far field skipped. The
-    // far field's cones saw past the atrium's columns (3.1 % bright at low with the near field a
-    // tenth of the extent) and covered the near field's deficits in the room scenes; with those
-    // fixed (docs/gi.md, energy 33.-41.) the whole near field is the more accurate and, without the
-    // cones, the cheaper.
-    s.probes.nearFieldDistance = ScreenProbeSettings::kNearFieldWholeTrace;
+    // Medium and high: every ray traced through the mesh SDFs and read from the cards, the far
+    // field skipped. The far field's cones saw past the atrium's columns and covered the near
+    // field's deficits in the room scenes; with those fixed (docs/gi.md, energy 33.-41.) the whole
+    // near field is the more accurate and, without the cones, the cheaper. Low: a tenth of the
+    // scene's extent, then the far field (the preset says why).
+    s.probes.nearFieldDistance = knobs.nearFieldExtentFraction > 0.0f
+                                     ? knobs.nearFieldExtentFraction * giSceneExtent(scene)
+                                     : ScreenProbeSettings::kNearFieldWholeTrace;
     s.probes.probeSpacing = knobs.probeSpacing;
     s.probes.raysPerProbe = knobs.raysPerProbe;
     s.probes.probeHistoryBlend = knobs.probeHistoryBlend;

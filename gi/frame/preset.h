@@ -30,6 +30,7 @@ struct Preset {
     uint32_t raysPerProbe;            // screen-probe rays
     float probeHistoryBlend;          // weight of the new frame in the probe history
     float screenHistoryBlend;         // ... in the full-resolution temporal filter
+    float nearFieldExtentFraction; // screen-probe near field, x the scene's largest extent; 0: the whole ray
     // DDGI (gi/ddgi/ddgi_settings.h).
     uint32_t ddgiProbesPerAxis; // probes along each axis of a volume fitted to the scene (or a cascade)
     uint32_t ddgiRaysPerProbe;  // rays per probe and update, the fixed relocation set included

@@ -38,7 +38,7 @@ struct ScreenProbeSettings {
     // (the surface cache's own: 76%; docs/screen_probes.md).
     static constexpr float kNearFieldGridFraction = 0.25f;
     // A near field longer than any trace: every ray a mesh-SDF trace read from the cards, the far
-    // field skipped (the presets' choice since docs/gi.md, energy 41.).
+    // field skipped (medium's and high's since docs/gi.md, energy 41.).
     static constexpr float kNearFieldWholeTrace = 1e30f;
 
     float probeHistoryBlend = 0.1f; // weight of the new frame in the probe radiance history
