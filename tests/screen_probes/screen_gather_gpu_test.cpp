@@ -159,7 +159,7 @@ TEST_P(ScreenGatherGpuTest, DumpWritesEveryIntermediateAsItIs) {
     const std::filesystem::path dir = std::filesystem::temp_directory_path() /
                                       ("lumina_screen_probe_dump_" + std::to_string(std::random_device{}()));
     const auto written = gi::dumpScreenProbeBuffers(device(), harness.probes(), dir);
-    EXPECT_EQ(written.size(), 14u);
+    EXPECT_EQ(written.size(), 15u);
     for (const auto& path : written) {
         EXPECT_TRUE(std::filesystem::exists(path)) << path;
     }
