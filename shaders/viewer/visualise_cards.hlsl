@@ -41,7 +41,8 @@ uint pixelCard(int2 p) {
     if (position.w <= 0.0) {
         return LUMINA_NO_CARD;
     }
-    return findCardOwner(position.xyz, normalize(gNormal.Load(int3(p, 0)).xyz), LUMINA_ANY_INSTANCE, float3(0.0, 0.0, 0.0)).card;
+    const float3 n = normalize(gNormal.Load(int3(p, 0)).xyz);
+    return findCardOwner(position.xyz, n, LUMINA_ANY_INSTANCE, float3(0.0, 0.0, 0.0)).card;
 }
 
 [numthreads(LUMINA_VISUALISE_GROUP_SIZE, LUMINA_VISUALISE_GROUP_SIZE, 1)]
