@@ -94,15 +94,49 @@ built=$(date +%s)
 # A throw-away Wine prefix: nothing from earlier runs, no Mono or Gecko installers.
 prefix=$(mktemp -d "${TMPDIR:-/tmp}/lumina-wine.XXXXXX")
 export WINEPREFIX=$prefix WINEDEBUG=-all WINEDLLOVERRIDES="mscoree,mshtml=" WINEARCH=win64
+# One virtual X display (Wine's DXGI needs a display driver to list adapters) for every Wine
+# program here, kept until the end. A display per program (scripts/with_virtual_display.sh) closed
+# under the prefix's own processes whenever the program that started them ended, while the other
+# test executable of the pair below still ran in the same prefix ("X connection to :0 broken" in
+# the log); once such an executable exited non-zero after every one of its tests had passed.
+xvfb_dir=$(mktemp -d "${TMPDIR:-/tmp}/lumina-xvfb.XXXXXX")
+mkfifo "$xvfb_dir/display"
+# Started from a subshell, so that it is no job of this shell: the GI tests below `wait` for all
+# their jobs, which would then include the display server.
+(Xvfb -displayfd 3 -screen 0 640x480x24 -nolisten tcp 3>"$xvfb_dir/display" 2>"$xvfb_dir/xvfb.log" &
+    echo $! >"$xvfb_dir/pid")
 cleanup() {
     WINEPREFIX=$prefix "$(dirname "$wine")/wineserver" -k >/dev/null 2>&1 || wineserver -k >/dev/null 2>&1 || true
-    rm -rf "$prefix"
+    kill "$(cat "$xvfb_dir/pid" 2>/dev/null)" 2>/dev/null || true
+    rm -rf "$prefix" "$xvfb_dir"
 }
 trap cleanup EXIT
-# Runs a Windows executable under Wine on a virtual X display (Wine's DXGI needs a display
-# driver to list adapters).
+# -displayfd writes the display's number once the server accepts connections.
+display=$(head -n 1 "$xvfb_dir/display")
+[ -n "$display" ] || { cat "$xvfb_dir/xvfb.log" >&2; fail "Xvfb did not start"; }
+export DISPLAY=:$display
 run_wine() {
-    "$root/scripts/with_virtual_display.sh" "$wine" "$@"
+    "$wine" "$@"
+}
+# gtest_xml_passed XML: true when gtest's XML report (written once every test has run, before the
+# program exits) counts at least one test and no failure or error.
+gtest_xml_passed() {
+    [ -s "$1" ] && python3 - "$1" <<'PY'
+import sys, xml.etree.ElementTree as ET
+root = ET.parse(sys.argv[1]).getroot()
+ok = int(root.get("tests", 0)) > 0 and root.get("failures") == "0" and root.get("errors") == "0"
+sys.exit(0 if ok else 1)
+PY
+}
+# Wine's server kills a process (SIGKILL, exit 137) one second after the last of its Windows
+# threads ended, if its Unix side has not exited by then. What runs in that second is the host
+# libraries' teardown: lavapipe's, LLVM's and the validation layer's destructors and the unmapping
+# of gigabytes, which on two busy cores sometimes took longer: in CI a GI suite was killed so, right
+# after gtest's "[  PASSED  ]" line. killed_at_exit_after_passing STATUS XML: for exit 137 with
+# gtest's report complete and every test in it passed, prints a note and succeeds; otherwise fails.
+killed_at_exit_after_passing() {
+    [ "$1" -eq 137 ] && gtest_xml_passed "$2" || return 1
+    echo "   (Wine killed it at exit, after its report counted every test passed: docs/d3d12.md)"
 }
 
 # vkd3d 1.6 (Wine 8) reads every descriptor table as zero on Debian 12's lavapipe (Mesa 22.3,
@@ -113,11 +147,11 @@ export VK_ICD_FILENAMES=$tools/lvp_icd.json VKD3D_CONFIG=virtual_heaps
 export LUMINA_SHADER_DIR="Z:$kernels"
 
 # The prefix is made by the first program Wine starts; once (of many runs) that first program
-# exited 1 after its output, as the virtual display closed under the prefix's setup. So the
-# prefix is set up first, on its own, and waited for (wineserver -w) before the display closes.
+# exited 1 after its output, as its virtual display closed under the prefix's setup. So the
+# prefix is set up first, on its own, and waited for (wineserver -w).
 echo "== wine: prefix"
-"$root/scripts/with_virtual_display.sh" sh -c '"$1" wineboot --init && "$2" -w' wineboot "$wine" \
-    "$(dirname "$wine")/wineserver" || echo "(wineboot --init exited $?; the first run sets the prefix up)"
+sh -c '"$1" wineboot --init && "$2" -w' wineboot "$wine" "$(dirname "$wine")/wineserver" ||
+    echo "(wineboot --init exited $?; the first run sets the prefix up)"
 
 echo "== wine: lumina.exe"
 run_wine "$build/app/lumina.exe" --version
@@ -159,6 +193,9 @@ run_wine "$build/tests/rhi/rhi_conformance.exe" --gtest_output="xml:Z:$build/win
     tee "$log"
 status=${PIPESTATUS[0]}
 set -e
+if [ "$status" -ne 0 ] && killed_at_exit_after_passing "$status" "$build/wine-rhi-conformance.xml"; then
+    status=0
+fi
 passed=$(grep -c '^\[       OK \]' "$log" || true)
 skipped=$(grep -c '^\[  SKIPPED \] .*(' "$log" || true)
 failed=$(grep -c '^\[  FAILED  \] .*(' "$log" || true)
@@ -195,7 +232,7 @@ check_vkd3d_validation() {
         echo "   $what: $known messages of vkd3d's own translation (known, docs/d3d12.md)"
     fi
     if [ "$others" -gt 0 ]; then
-        grep -E 'Validation (Error|Warning)' "$log" | grep -vE "$VKD3D_KNOWN_MESSAGES" | head -n 20 >&2
+        grep -E 'Validation (Error|Warning)' "$log" | grep -vE "$VKD3D_KNOWN_MESSAGES" | head -n 20 >&2 || true
         fail "Vulkan validation reported $others problems beneath vkd3d in $what; log: $log"
     fi
 }
@@ -234,10 +271,14 @@ rm -rf "$gi_logs" && mkdir -p "$gi_logs"
 run_gi_test() {
     local name=${1//\//_} begin status
     begin=$(date +%s)
-    if run_wine "$build/tests/$1.exe" --gtest_filter="$gi_filter" >>"$gi_logs/$name.log" 2>&1; then
+    if run_wine "$build/tests/$1.exe" --gtest_filter="$gi_filter" --gtest_output="xml:Z:$gi_logs/$name.xml" \
+        >>"$gi_logs/$name.log" 2>&1; then
         status=0
     else
         status=$?
+        if killed_at_exit_after_passing "$status" "$gi_logs/$name.xml" >>"$gi_logs/$name.log"; then
+            status=0
+        fi
     fi
     echo "$status $(($(date +%s) - begin))" >"$gi_logs/$name.status"
 }
@@ -263,8 +304,14 @@ for test in $gi_tests; do
     read -r status seconds <"$gi_logs/$name.status" || { status=1; seconds=?; }
     echo "== wine: $test.exe on D3D12 ($seconds s): $(grep -E '^\[  (PASSED|FAILED) +\] [0-9]' \
         "$gi_logs/$name.log" | tail -n 1 || true)"
+    grep -F '(Wine killed it at exit' "$gi_logs/$name.log" || true
     if [ "$status" -ne 0 ]; then
-        grep -E -A4 '^\[  FAILED  \]|Failure$' "$gi_logs/$name.log" | tail -n 60 >&2
+        # `|| true`: an executable can exit non-zero with no failed test in its log (a crash on the
+        # way out); grep then finds nothing, and under pipefail that once ended this script with no
+        # word of which executable failed.
+        grep -E -A4 '^\[  FAILED  \]|Failure$' "$gi_logs/$name.log" | tail -n 60 >&2 || true
+        echo "   $test.exe exited $status; the end of its log:" >&2
+        tail -n 15 "$gi_logs/$name.log" >&2 || true
         gi_failed="$gi_failed $test.exe (exit $status)"
     fi
 done

@@ -139,6 +139,13 @@ void Context::createDevice() {
     require(supported12.timelineSemaphore, "timelineSemaphore");
     require(supported13.synchronization2, "synchronization2");
     require(supported13.dynamicRendering, "dynamicRendering");
+    // Filtering 32-bit float textures is optional in Vulkan (D3D12 requires it); the screen probes'
+    // irradiance atlas is one, sampled bilinearly (a half-float atlas rounded a furnace's light by up to
+    // 0.04 %, docs/screen_probes.md#ranges).
+    VkFormatProperties rgba32f{};
+    vkGetPhysicalDeviceFormatProperties(physicalDevice_, VK_FORMAT_R32G32B32A32_SFLOAT, &rgba32f);
+    require((rgba32f.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT) != 0,
+            "linear filtering of VK_FORMAT_R32G32B32A32_SFLOAT");
 
     auto enabled13 =
         vkStruct<VkPhysicalDeviceVulkan13Features>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES);

@@ -548,7 +548,7 @@ Command renderCommand() {
              {"rays-per-probe", "N", "rays per screen probe (overrides the preset; 16..256)"},
              {"near-field-distance", "D",
               "screen-probe near-field trace length in scene units; beyond it the far field (0: far field "
-              "only; default: the preset's, a tenth of the scene's largest extent at low, the whole trace at "
+              "only; default: the preset's, 15 % of the scene's largest extent at low, the whole trace at "
               "medium and high)"},
              {"exr", "PATH", "also write the linear HDR result as EXR"},
              {"dump-buffers", "DIR", "write every intermediate buffer into DIR"},

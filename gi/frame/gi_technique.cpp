@@ -91,7 +91,7 @@ LumenSettings lumenPreset(const Preset& knobs, const scene::Scene& scene) {
     // Medium and high: every ray traced through the mesh SDFs and read from the cards, the far
     // field skipped. The far field's cones saw past the atrium's columns and covered the near
     // field's deficits in the room scenes; with those fixed (docs/gi.md, energy 33.-41.) the whole
-    // near field is the more accurate and, without the cones, the cheaper. Low: a tenth of the
+    // near field is the more accurate and, without the cones, the cheaper. Low: 15 % of the
     // scene's extent, then the far field (the preset says why).
     s.probes.nearFieldDistance = knobs.nearFieldExtentFraction > 0.0f
                                      ? knobs.nearFieldExtentFraction * giSceneExtent(scene)

@@ -73,7 +73,7 @@ public:
     // A material the instance draws changed (emission); `reach` is where its light may land.
     virtual void instanceMaterialChanged(uint32_t instance, const scene::Bounds& reach) = 0;
 
-    // RGBA16F irradiance E per pixel (0 on sky), what the composite multiplies by
+    // Irradiance E per pixel (RGBA16F or RGBA32F; 0 on sky), what the composite multiplies by
     // indirectScale() x albedo.
     virtual rhi::TextureHandle indirect() const = 0;
     // A Lambertian surface of albedo a sends a x E / pi.

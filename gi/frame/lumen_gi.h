@@ -50,7 +50,7 @@ public:
                    std::span<const scene::Bounds> reach) override;
     void instanceMaterialChanged(uint32_t instance, const scene::Bounds& reach) override;
 
-    // The screen probes' RGBA16F irradiance E per pixel (0 on sky).
+    // The screen probes' RGBA32F irradiance E per pixel (0 on sky).
     rhi::TextureHandle indirect() const override { return probes_.irradiance(); }
     std::vector<GiMemoryPart> memory() const override;
     std::vector<GiDebugTexture> debugTextures() const override;

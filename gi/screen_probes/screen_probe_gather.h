@@ -9,7 +9,7 @@
 //   ScreenProbeGather probes(device, width, height, settings);
 //   probes.record(frame, {.gbuffer = renderer.gbuffer(), .camera = camera, .sdf = sdfs,
 //                         .sky = gpuScene.sky, .surfaceCache = gi::surfaceCacheView(cache)});
-//   probes.irradiance();   // RGBA16F: rgb irradiance per pixel (0 on sky)
+//   probes.irradiance();   // RGBA32F: rgb irradiance per pixel (0 on sky)
 //
 // The GBuffer must hold the frame `camera` describes. The SceneSdf must have recorded its
 // global SDF before (SceneSdf::record), the surface cache its update. History follows the camera

@@ -49,7 +49,7 @@ ScreenProbeResources ScreenProbeResources::create(rhi::IDevice& device, uint32_t
         r.probeAge[i] = structured(device, r.probeCount, sizeof(uint32_t), "probe age" + half);
         r.unclamped[i] = structured(device, texels, sizeof(float), "unclamped luminance" + half);
         r.screenIrradiance[i] =
-            storage2d(device, rhi::Format::RGBA16_FLOAT, width, height, "screen irradiance" + half);
+            storage2d(device, rhi::Format::RGBA32_FLOAT, width, height, "screen irradiance" + half);
         r.screenPosition[i] =
             storage2d(device, rhi::Format::RGBA32_FLOAT, width, height, "screen position" + half);
     }
@@ -62,9 +62,9 @@ ScreenProbeResources ScreenProbeResources::create(rhi::IDevice& device, uint32_t
     r.frameRadiance = structured(device, texels, sizeof(gpu::float4), "frame radiance");
     r.filtered = structured(device, texels, sizeof(gpu::float4), "filtered radiance");
     r.sh = structured(device, uint64_t(r.probeCount) * LUMINA_SH_COEFFICIENTS, sizeof(gpu::float4), "sh");
-    r.irradiance = storage2d(device, rhi::Format::RGBA16_FLOAT, r.gridWidth * LUMINA_SP_IRRADIANCE_TILE,
+    r.irradiance = storage2d(device, rhi::Format::RGBA32_FLOAT, r.gridWidth * LUMINA_SP_IRRADIANCE_TILE,
                              r.gridHeight * LUMINA_SP_IRRADIANCE_TILE, "irradiance atlas");
-    r.gather = storage2d(device, rhi::Format::RGBA16_FLOAT, width, height, "gather");
+    r.gather = storage2d(device, rhi::Format::RGBA32_FLOAT, width, height, "gather");
     r.noVoxelLighting = device.createTexture({.dimension = rhi::TextureDimension::Texture3D,
                                               .format = rhi::Format::RGBA16_FLOAT,
                                               .usage = rhi::TextureUsage::Sampled,

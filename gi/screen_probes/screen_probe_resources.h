@@ -33,9 +33,9 @@ struct ScreenProbeResources {
                                                 // the outlier clamp, the clamp's reference
     rhi::BufferHandle filtered;                 // float4[probeCount x 64]: after the spatial filter
     rhi::BufferHandle sh;                       // float4[probeCount x 9]: rgb per SH coefficient
-    rhi::TextureHandle irradiance;              // RGBA16F atlas of bordered octahedral tiles
-    rhi::TextureHandle gather; // RGBA16F full resolution: irradiance, before the screen filter
-    std::array<rhi::TextureHandle, 2> screenIrradiance; // RGBA16F: the result; a: frames accumulated
+    rhi::TextureHandle irradiance;              // RGBA32F atlas of bordered octahedral tiles
+    rhi::TextureHandle gather; // RGBA32F full resolution: irradiance, before the screen filter
+    std::array<rhi::TextureHandle, 2> screenIrradiance; // RGBA32F: the result; a: frames accumulated
     std::array<rhi::TextureHandle, 2> screenPosition;   // RGBA32F: GBuffer position the result was made at
     rhi::TextureHandle noVoxelLighting; // 1x1x1 RGBA16F of zeros, bound when the caller has none
     rhi::SamplerHandle linearClamp;

@@ -17,7 +17,7 @@ StructuredBuffer<ScreenProbe> gProbes : register(t0);
 StructuredBuffer<float4> gFiltered : register(t1);
 RWStructuredBuffer<float4> gSh : register(u0); // LUMINA_SH_COEFFICIENTS per probe: rgb per coefficient
 // Tiles of LUMINA_SP_IRRADIANCE_TILE^2 texels, probe (x, y) at tile (x, y).
-LUMINA_UAV_FORMAT(rgba16f) RWTexture2D<float4> gIrradiance : register(u1);
+LUMINA_UAV_FORMAT(rgba32f) RWTexture2D<float4> gIrradiance : register(u1);
 
 // Texel i's projection onto coefficient k at i * LUMINA_SH_COEFFICIENTS + k: one dimension, as
 // vkd3d-shader reads a two-dimensional groupshared array at the wrong element (docs/d3d12.md).

@@ -13,7 +13,7 @@ Texture2D<float4> gPosition : register(t1);
 StructuredBuffer<ScreenProbe> gProbes : register(t2);
 Texture2D<float4> gIrradiance : register(t3);
 SamplerState gLinearClamp : register(s0);
-LUMINA_UAV_FORMAT(rgba16f) RWTexture2D<float4> gGather : register(u0); // rgb: irradiance; a: 1 on surfaces
+LUMINA_UAV_FORMAT(rgba32f) RWTexture2D<float4> gGather : register(u0); // rgb: irradiance; a: 1 on surfaces
 
 // Total weight below which the surface-aware weights are not trusted.
 #define LUMINA_SP_MIN_GATHER_WEIGHT 1e-4

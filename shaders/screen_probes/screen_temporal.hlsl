@@ -15,7 +15,7 @@ Texture2D<float4> gPosition : register(t1);          // GBuffer: world position,
 Texture2D<float4> gPreviousIrradiance : register(t2); // this pass's output last frame
 Texture2D<float4> gPreviousPosition : register(t3);
 // rgb: irradiance; a: frames accumulated.
-LUMINA_UAV_FORMAT(rgba16f) RWTexture2D<float4> gIrradiance : register(u0);
+LUMINA_UAV_FORMAT(rgba32f) RWTexture2D<float4> gIrradiance : register(u0);
 LUMINA_UAV_FORMAT(rgba32f) RWTexture2D<float4> gPositionHistory : register(u1);
 
 // Frame count saturates here (the blend is screenHistoryBlend from then on; half floats hold it exactly).
