@@ -137,6 +137,7 @@ int runReference(const ParsedArgs& args) {
 
     const std::string& name = args.positional.front();
     scene::Scene loaded = scene::loadScene(name, sceneLoadOptions(args));
+    poseAtAnimationFrame(args, loaded);
     if (args.common.size) {
         settings.width = args.common.size->width;
         settings.height = args.common.size->height;
@@ -300,10 +301,9 @@ Command referenceCommand() {
     return {
         .name = "reference",
         .summary = "path-trace the ground-truth image of a scene (EXR with variance and AOVs)",
-        .usage =
-            "lumina reference SCENE [--spp N] [--target-error E] [--out ref.exr] [--size WxH] [--aovs] "
-            "[--max-bounces N] [--seed N] [--png PATH] [--shard i/n] [--no-default-light] [--sky FILE.exr "
-            "[--sky-intensity K]]",
+        .usage = "lumina reference SCENE [--spp N] [--target-error E] [--out ref.exr] [--size WxH] [--aovs] "
+                 "[--max-bounces N] [--seed N] [--animation-frame F] [--png PATH] [--shard i/n] "
+                 "[--no-default-light] [--sky FILE.exr [--sky-intensity K]]",
         .description =
             "Renders SCENE (a built-in name or a scene/glTF path) with the reference path tracer on the GPU: "
             "the same camera, pixel footprint, units and lights as the real-time renderer "
@@ -324,6 +324,9 @@ Command referenceCommand() {
              {"aovs", "", "also write albedo, normal, direct and indirect channels"},
              {"max-bounces", "N", "scattering events per path (default 1024; roulette ends most paths)"},
              {"pixel-centres", "", "sample pixel centres only (no antialiasing), like a rasteriser"},
+             {"animation-frame", "F",
+              "pose an animated scene at frame F (default: the scene as built, before any animation; "
+              "`lumina render --animation-frame F` renders the same pose)"},
              {"png", "PATH", "also write a tonemapped PNG preview"},
              shardFlag("trace band i of n bands of rows only (0 <= i < n; not with --target-error or "
                        "--png; default OUT: SCENE_reference_shardIofN.exr)")}),

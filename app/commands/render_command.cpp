@@ -133,13 +133,7 @@ int renderWith(const ParsedArgs& args) {
     }
     // An animated scene plays its animation (docs/dynamic_scenes.md) unless --animation-frame poses
     // it at one frame and holds it still.
-    const bool animated = !loaded.animation.empty() && !args.has("animation-frame");
-    if (args.has("animation-frame")) {
-        if (loaded.animation.empty()) {
-            throw UsageError("--animation-frame: scene '" + loaded.name + "' has no animation");
-        }
-        scene::animateScene(loaded, args.getUint("animation-frame", 0, 0, UINT32_MAX));
-    }
+    const bool animated = !poseAtAnimationFrame(args, loaded) && !loaded.animation.empty();
     const std::filesystem::path out = args.common.out.empty() ? loaded.name + ".png" : args.common.out;
     // A name ending in .exr asks for the linear image; writing a PNG under that name (as this
     // once did) leaves a file every EXR reader rejects.

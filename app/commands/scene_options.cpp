@@ -1,6 +1,7 @@
 #include "app/commands/scene_options.h"
 
 #include "gi/scene/default_light.h"
+#include "gi/scene/scene_animation.h"
 
 #include <cmath>
 
@@ -39,6 +40,17 @@ scene::LoadOptions sceneLoadOptions(const ParsedArgs& args) {
         options.skyIntensity = float(intensity);
     }
     return options;
+}
+
+bool poseAtAnimationFrame(const ParsedArgs& args, scene::Scene& scene) {
+    if (!args.has("animation-frame")) {
+        return false;
+    }
+    if (scene.animation.empty()) {
+        throw UsageError("--animation-frame: scene '" + scene.name + "' has no animation");
+    }
+    scene::animateScene(scene, args.getUint("animation-frame", 0, 0, UINT32_MAX));
+    return true;
 }
 
 std::string lightingLine(const scene::Scene& scene) {

@@ -20,6 +20,10 @@ std::vector<FlagSpec> withSceneLoadFlags(std::vector<FlagSpec> flags);
 // without --sky.
 scene::LoadOptions sceneLoadOptions(const ParsedArgs& args);
 
+// Poses `scene` at the frame --animation-frame names, held still; false when the flag is absent.
+// UsageError when the scene has no animation.
+bool poseAtAnimationFrame(const ParsedArgs& args, scene::Scene& scene);
+
 // "lights: ..." : what lights the scene and where it came from (the file, the default light,
 // --sky), so a black or unexpectedly lit image is explained.
 std::string lightingLine(const scene::Scene& scene);

@@ -8,8 +8,9 @@
 # 1 / (1 - RHO) everywhere (`lumina compare --exact`), and no reference is rendered for it: a path-traced
 # reference's own noise was most of the relMSE there (furnace_0.99 at 1,024 spp) and hid the order
 # of the presets.
-# An animated scene is measured at its first pose, held still (--animation-frame 0), the pose its
-# reference shows. Prints one markdown row per scene and technique: relMSE of direct-only, and for each preset the
+# An animated scene is measured at its first pose, held still (--animation-frame 0), or at frame F
+# where LUMINA_SCENES names it SCENE@F (`door@240`: the door open); its reference shows the same
+# pose (`lumina reference --animation-frame`). Prints one markdown row per scene and technique: relMSE of direct-only, and for each preset the
 # technique's relMSE, its ratio to direct-only's and its mean radiance over the reference's. Writes
 # accuracy.txt (every compare in full) and accuracy.md (the table) under $OUT.
 set -uo pipefail
@@ -47,12 +48,17 @@ for preset in $presets; do
 done
 echo "$header |" >"$out/accuracy.md"
 echo "$rule|" >>"$out/accuracy.md"
-for scene in $scenes; do
+for entry in $scenes; do
+  scene=${entry%@*}
+  frame=0
+  [ "$entry" = "$scene" ] || frame=${entry#*@}
   pose=""
   if $lumina info "$scene" 2>/dev/null | grep '^  animation' | grep -qv ' none$'; then
-    pose="--animation-frame 0"
+    pose="--animation-frame $frame"
   fi
-  ref=/tmp/ref_$scene.exr
+  ref=/tmp/ref_$entry.exr
+  label=""
+  [ "$entry" = "$scene" ] || label=" (frame $frame)"
   case "$scene" in
     furnace_*)
       ref=exact:$(awk -v rho="${scene#furnace_}" 'BEGIN { printf "%.9g", 1 / (1 - rho) }')
@@ -61,23 +67,23 @@ for scene in $scenes; do
       # A reference an earlier call on this (still warm) machine made is kept (accuracy_variants.sh
       # keeps them under the same name).
       if [ ! -s "$ref.$size.$spp" ]; then
-        timeout 600 $lumina reference "$scene" --size "$size" --spp "$spp" --pixel-centres --out "$ref" 2>&1 |
+        timeout 600 $lumina reference "$scene" --size "$size" --spp "$spp" --pixel-centres $pose --out "$ref" 2>&1 |
           tail -1 >>"$out/accuracy.txt"
         cp "$ref" "$ref.$size.$spp"
       fi
       cp "$ref.$size.$spp" "$ref" ;;
   esac
-  timeout 120 $lumina render "$scene" --technique direct --size "$size" --frames 1 $pose --exr "/tmp/direct_$scene.exr" \
-    --out "/tmp/direct_$scene.png" >/dev/null 2>&1
-  read -r directRel _ _ < <(figures "$ref" "/tmp/direct_$scene.exr")
+  timeout 120 $lumina render "$scene" --technique direct --size "$size" --frames 1 $pose --exr "/tmp/direct_$entry.exr" \
+    --out "/tmp/direct_$entry.png" >/dev/null 2>&1
+  read -r directRel _ _ < <(figures "$ref" "/tmp/direct_$entry.exr")
   for technique in $techniques; do
-    row="| \`$scene\` | $technique | $directRel"
+    row="| \`$scene\`$label | $technique | $directRel"
     for preset in $presets; do
-      exr=/tmp/${technique}_${scene}_$preset.exr
+      exr=/tmp/${technique}_${entry}_$preset.exr
       timeout 600 $lumina render "$scene" --technique "$technique" --preset "$preset" --size "$size" $pose --exr "$exr" \
-        --out "/tmp/${technique}_${scene}_$preset.png" 2>&1 | grep -E '^(frames|surface)' >>"$out/accuracy.txt"
+        --out "/tmp/${technique}_${entry}_$preset.png" 2>&1 | grep -E '^(frames|surface)' >>"$out/accuracy.txt"
       read -r rel mean refMean < <(figures "$ref" "$exr")
-      echo "$scene $technique $preset: relMSE $rel (direct $directRel), mean $mean (reference $refMean)" |
+      echo "$entry $technique $preset: relMSE $rel (direct $directRel), mean $mean (reference $refMean)" |
         tee -a "$out/accuracy.txt"
       row="$row | $rel | $(awk -v a="$rel" -v b="$directRel" 'BEGIN { printf "%.3f", a / b }') | $(awk -v a="$mean" -v b="$refMean" 'BEGIN { printf "%.3f", a / b }')"
     done

@@ -43,3 +43,21 @@ run(2 bad-target reference cornell_box --target-error nope)
 run(2 no-scene reference)
 run(2 bad-out-dir reference cornell_box --out "${DIR}/missing/dir/x.exr")
 expect_match(bad-out-dir "${ERR}" "no directory")
+run(2 no-animation reference cornell_box --spp 1 --animation-frame 3 --out "${DIR}/x.exr")
+expect_match(no-animation "${ERR}" "--animation-frame: scene 'cornell_box' has no animation")
+
+# 4. --animation-frame poses an animated scene: `door` open (frame 240) is not `door` shut, whose
+# dark room then takes the lamp's light through the doorway.
+run(0 shut reference door --size 16x16 --spp 4 --out "${DIR}/door_shut.exr")
+run(0 open reference door --size 16x16 --spp 4 --animation-frame 240 --out "${DIR}/door_open.exr")
+run(0 open-differs compare "${DIR}/door_shut.exr" "${DIR}/door_open.exr")
+set(n "[0-9.e+-]+")
+if(NOT OUT MATCHES "reference \\(${n}, (${n}), ${n}\\), test \\(${n}, (${n}), ${n}\\)")
+  message(FATAL_ERROR "[open-differs] no mean in the comparison:\n${OUT}")
+endif()
+# The green means.
+set(shut "${CMAKE_MATCH_1}")
+set(open "${CMAKE_MATCH_2}")
+if(NOT open GREATER 0.001 OR NOT open GREATER shut)
+  message(FATAL_ERROR "[open-differs] the door posed open is no brighter than shut (green ${open} against ${shut}):\n${OUT}")
+endif()
