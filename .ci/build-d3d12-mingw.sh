@@ -245,8 +245,8 @@ check_vkd3d_validation() {
 # 1,000-frame stress tests (frame_stress_test). Left out, as on Vulkan, what is labelled `long`
 # there (both rho 0.99 furnaces, city at medium and high), and, for CI's 90 minutes, sunlit_rooms at
 # the high preset (a 4096^2 atlas; its medium runs here) and the stored-reference accuracy of the
-# moving box (the Cornell box's, which runs here), the engine and the real scenes (whose frames run
-# here in real_scenes_gpu_test). docs/d3d12.md lists what runs here.
+# moving box (the Cornell box's, which runs here), the engine, the open door and the real scenes
+# (whose frames run here in real_scenes_gpu_test). docs/d3d12.md lists what runs here.
 # Two executables run at a time (WINE_JOBS): one test under Wine keeps about one core busy (the
 # validation layer and vkd3d's translation run in the submitting thread), so one after another
 # left the second core of a CI machine idle. The longest are listed first, so that none starts
@@ -259,7 +259,7 @@ gi_log=$build/wine-gi-tests.log
 gi_logs=$build/wine-gi-tests
 gi_filter='*d3d12*:-*Rho099*:*furnace_0_99:*city_medium:*city_high:*sunlit_rooms_high'
 gi_filter+=':*StoredReferenceGpu*d3d12_cornell_box_moving:*StoredReferenceGpu*d3d12_two_cylinder_engine'
-gi_filter+=':*StoredReferenceGpu*d3d12_atrium*:*StoredReferenceGpu*d3d12_city*'
+gi_filter+=':*StoredReferenceGpu*d3d12_atrium*:*StoredReferenceGpu*d3d12_city*:*StoredReferenceGpu*d3d12_door*'
 gi_tests="frame/frame_gpu_test frame/frame_stress_test surface_cache/surface_cache_gpu_tests ddgi/ddgi_gpu_test
     frame/real_scenes_gpu_test screen_probes/screen_probes_gpu_test frame/dynamic_scene_gpu_test
     sh_grid/sh_grid_gpu_test surface_cache/sky_radiosity_gpu_test screen_probes/probe_sky_gpu_test

@@ -39,13 +39,14 @@ TEST_P(FramePresetsGpu, EachHigherPresetIsAtLeastAsAccurate) {
 }
 
 std::string presetsName(const ::testing::TestParamInfo<std::tuple<rhi::Api, const char*>>& info) {
-    return std::string(rhi::apiName(std::get<0>(info.param))) + "_" + std::get<1>(info.param);
+    return std::string(rhi::apiName(std::get<0>(info.param))) + "_" + poseName(std::get<1>(info.param));
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, FramePresetsGpu,
                          ::testing::Combine(::testing::ValuesIn(app::compiledApis()),
                                             ::testing::Values("cornell_box", "cornell_box_point",
-                                                              "open_top_box", "two_rooms", "sunlit_rooms")),
+                                                              "open_top_box", "two_rooms", "sunlit_rooms",
+                                                              "door@240")),
                          presetsName);
 
 } // namespace

@@ -7,9 +7,10 @@
 // samples per pixel made on the lent GPU (the Cornell boxes' and the open-top box's own noise below
 // 3e-4 relMSE; the two-room scenes', mean relative standard error 0.010 and 0.025).
 //
-// Regenerate after a change to the scenes or the path tracer:
+// Regenerate after a change to the scenes or the path tracer (scripts/gpu/stored_references.sh):
 //   lumina reference SCENE --size 128x128 --spp 65536 --pixel-centres --out
 //   tests/frame/data/SCENE_128x128.exr
+// and for a posed scene, SCENE@F, with --animation-frame F into SCENE_frameF_128x128.exr.
 #include "tests/frame/stored_reference.h"
 #include "tests/rhi/gpu_test_fixture.h"
 
@@ -51,7 +52,7 @@ TEST_P(FrameVsStoredReferenceGpu, LumenMeetsItsSceneGoal) {
 std::string goalName(const ::testing::TestParamInfo<std::tuple<rhi::Api, SceneGoal>>& info) {
     const SceneGoal& goal = std::get<1>(info.param);
     const std::string preset = goal.preset == std::string("medium") ? "" : std::string("_") + goal.preset;
-    return std::string(rhi::apiName(std::get<0>(info.param))) + "_" + goal.scene + preset;
+    return std::string(rhi::apiName(std::get<0>(info.param))) + "_" + poseName(goal.scene) + preset;
 }
 
 // The goal (issue 26): relMSE at most a twentieth of direct-only's in the Cornell boxes and the
@@ -114,6 +115,14 @@ const SceneGoal kSceneGoals[] = {
     // 0.171, 0.991 since energy 41. (0.191, 1.011 before; on the H200 at 256^2, 1.027 then, 1.007
     // now: docs/gi.md says why the image size matters).
     {.scene = "atrium", .relMseFraction = 0.21, .meanTolerance = 0.03},
+    // door with the door open (frame 240 of its loop: swung 90 degrees into the dark room), whose
+    // light all comes through the doorway. Shut (its first pose), the dark room takes only what
+    // passes the door's 1 cm gaps, finer than the SDFs and cards resolve: FrameClosedDoorGpu holds
+    // that lumen adds no light through the door, and docs/gi.md says what the shut door misses.
+    // Measured: 0.070, 1.018 (on the H200 at 128^2: 0.070, 1.017), not the twentieth a two-room scene
+    // should reach: 90 % of the error (at 256^2 on the H200) is a 6 cm strip of wall in the corner
+    // between the wall and the open door, on which no probe lands (docs/gi.md, energy 45.).
+    {.scene = "door@240", .relMseFraction = 0.08, .meanTolerance = 0.03},
     // city (label long: on lavapipe at 128^2 the low preset converges in 466 frames, 18 minutes;
     // medium ran over 30) at medium and low. Lavapipe, low: relMSE 2.044 times direct-only's, mean
     // 1.006. On the H200 at 128^2: 2.19 and 2.16, means 1.018 and 1.006. Its error lies where the

@@ -2,10 +2,13 @@
 
 #include "gi/image/exr.h"
 #include "gi/measure/metrics.h"
+#include "gi/scene/scene_animation.h"
 #include "gi/scene/scene_loader.h"
 #include "tests/frame/frame_harness.h"
 
 #include <cstdio>
+#include <optional>
+#include <utility>
 
 namespace lumina::test {
 
@@ -38,10 +41,29 @@ double meanRadiance(const image::Image& image) {
     return sum / (3.0 * double(image.pixelCount()));
 }
 
+// The scene's name and the animation frame "<scene>@F" poses it at, if any.
+struct ScenePose {
+    std::string scene;
+    std::optional<uint32_t> frame;
+};
+
+ScenePose splitPose(const std::string& name) {
+    const size_t at = name.find('@');
+    if (at == std::string::npos) {
+        return {name, std::nullopt};
+    }
+    return {name.substr(0, at), uint32_t(std::stoul(name.substr(at + 1)))};
+}
+
 } // namespace
 
+std::string poseName(const std::string& scene) {
+    const ScenePose pose = splitPose(scene);
+    return pose.frame ? pose.scene + "_frame" + std::to_string(*pose.frame) : pose.scene;
+}
+
 std::filesystem::path storedReferencePath(const std::string& scene) {
-    const std::string file = scene == "cornell_box_moving" ? "cornell_box" : scene;
+    const std::string file = scene == "cornell_box_moving" ? "cornell_box" : poseName(scene);
     return std::filesystem::path(LUMINA_FRAME_TEST_DATA_DIR) / (file + "_128x128.exr");
 }
 
@@ -54,7 +76,12 @@ StoredReferenceFigures measureAgainstStoredReference(rhi::IDevice& device, rhi::
     if (!f.referenceSized) {
         return f;
     }
-    FrameHarness h(device, shaders, scene::loadScene(scene),
+    const ScenePose pose = splitPose(scene);
+    scene::Scene loaded = scene::loadScene(pose.scene);
+    if (pose.frame) {
+        scene::animateScene(loaded, *pose.frame);
+    }
+    FrameHarness h(device, shaders, std::move(loaded),
                    {.width = kStoredReferenceSize, .height = kStoredReferenceSize, .preset = preset});
     f.frames = h.renderUntilConverged(kSettleFrames);
     f.converged = h.converged();

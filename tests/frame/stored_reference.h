@@ -12,10 +12,16 @@ namespace lumina::test {
 
 inline constexpr uint32_t kStoredReferenceSize = 128;
 
-// tests/frame/data/<scene>_128x128.exr, or the reference of the scene whose image `scene` shares:
-// cornell_box_moving, held at its first pose, is cornell_box (the path tracer renders both to the
-// same bits).
+// A scene name here may carry a pose: "door@240" is `door` posed at frame 240 of its animation and
+// held still (`lumina render --animation-frame 240`; `lumina reference` takes the same flag).
+
+// tests/frame/data/<scene>_128x128.exr (<scene>_frame<F>_128x128.exr for "<scene>@F"), or the
+// reference of the scene whose image `scene` shares: cornell_box_moving, held at its first pose, is
+// cornell_box (the path tracer renders both to the same bits).
 std::filesystem::path storedReferencePath(const std::string& scene);
+
+// "door@240" as "door_frame240": a name for a test or a file.
+std::string poseName(const std::string& scene);
 
 struct StoredReferenceFigures {
     double lumenRelMse = 0.0;
@@ -28,8 +34,8 @@ struct StoredReferenceFigures {
     uint64_t nonFinitePixels = 0; // in lumen's image
 };
 
-// Renders `scene` at `preset`, measures it and prints the figures. Throws when the reference
-// cannot be read.
+// Renders `scene` (posed where it names a frame) at `preset`, measures it and prints the figures.
+// Throws when the reference cannot be read.
 StoredReferenceFigures measureAgainstStoredReference(rhi::IDevice& device, rhi::ShaderLibrary& shaders,
                                                      const std::string& scene, const std::string& preset);
 
