@@ -133,7 +133,8 @@ int renderWith(const ParsedArgs& args) {
     }
     // An animated scene plays its animation (docs/dynamic_scenes.md) unless --animation-frame poses
     // it at one frame and holds it still.
-    const bool animated = !poseAtAnimationFrame(args, loaded) && !loaded.animation.empty();
+    const bool heldStill = poseAtAnimationFrame(args, loaded);
+    const bool animated = !heldStill && !loaded.animation.empty();
     const std::filesystem::path out = args.common.out.empty() ? loaded.name + ".png" : args.common.out;
     // A name ending in .exr asks for the linear image; writing a PNG under that name (as this
     // once did) leaves a file every EXR reader rejects.

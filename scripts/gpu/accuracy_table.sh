@@ -17,6 +17,7 @@ set -uo pipefail
 out=${OUT:-$PWD/gpu-out}
 mkdir -p "$out"
 source scripts/gpu/prologue.sh
+source scripts/gpu/scene_entry.sh
 export LUMINA_CACHE_DIR=/tmp/lumina-cache
 lumina=.devbin/lumina
 scenes=${LUMINA_SCENES:-"cornell_box cornell_box_point open_top_box two_rooms sunlit_rooms furnace_0.5 furnace_0.8 furnace_0.95 furnace_0.99"}
@@ -49,39 +50,25 @@ done
 echo "$header |" >"$out/accuracy.md"
 echo "$rule|" >>"$out/accuracy.md"
 for entry in $scenes; do
-  scene=${entry%@*}
-  frame=0
-  [ "$entry" = "$scene" ] || frame=${entry#*@}
-  pose=""
-  if $lumina info "$scene" 2>/dev/null | grep '^  animation' | grep -qv ' none$'; then
-    pose="--animation-frame $frame"
-  fi
-  ref=/tmp/ref_$entry.exr
+  scene_entry "$entry"
+  ref=/tmp/ref_$entry_name.exr
   label=""
   [ "$entry" = "$scene" ] || label=" (frame $frame)"
   case "$scene" in
     furnace_*)
       ref=exact:$(awk -v rho="${scene#furnace_}" 'BEGIN { printf "%.9g", 1 / (1 - rho) }')
       echo "$scene: against the exact answer, ${ref#exact:} everywhere" >>"$out/accuracy.txt" ;;
-    *)
-      # A reference an earlier call on this (still warm) machine made is kept (accuracy_variants.sh
-      # keeps them under the same name).
-      if [ ! -s "$ref.$size.$spp" ]; then
-        timeout 600 $lumina reference "$scene" --size "$size" --spp "$spp" --pixel-centres $pose --out "$ref" 2>&1 |
-          tail -1 >>"$out/accuracy.txt"
-        cp "$ref" "$ref.$size.$spp"
-      fi
-      cp "$ref.$size.$spp" "$ref" ;;
+    *) cached_reference "$ref" "$size" "$spp" >>"$out/accuracy.txt" ;;
   esac
-  timeout 120 $lumina render "$scene" --technique direct --size "$size" --frames 1 $pose --exr "/tmp/direct_$entry.exr" \
-    --out "/tmp/direct_$entry.png" >/dev/null 2>&1
-  read -r directRel _ _ < <(figures "$ref" "/tmp/direct_$entry.exr")
+  timeout 120 $lumina render "$scene" --technique direct --size "$size" --frames 1 $pose --exr "/tmp/direct_$entry_name.exr" \
+    --out "/tmp/direct_$entry_name.png" >/dev/null 2>&1
+  read -r directRel _ _ < <(figures "$ref" "/tmp/direct_$entry_name.exr")
   for technique in $techniques; do
     row="| \`$scene\`$label | $technique | $directRel"
     for preset in $presets; do
-      exr=/tmp/${technique}_${entry}_$preset.exr
+      exr=/tmp/${technique}_${entry_name}_$preset.exr
       timeout 600 $lumina render "$scene" --technique "$technique" --preset "$preset" --size "$size" $pose --exr "$exr" \
-        --out "/tmp/${technique}_${entry}_$preset.png" 2>&1 | grep -E '^(frames|surface)' >>"$out/accuracy.txt"
+        --out "/tmp/${technique}_${entry_name}_$preset.png" 2>&1 | grep -E '^(frames|surface)' >>"$out/accuracy.txt"
       read -r rel mean refMean < <(figures "$ref" "$exr")
       echo "$entry $technique $preset: relMSE $rel (direct $directRel), mean $mean (reference $refMean)" |
         tee -a "$out/accuracy.txt"

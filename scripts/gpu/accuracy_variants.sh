@@ -4,7 +4,7 @@
 # flags, against 65,536-spp references (docs/gi.md's energy notes use it to measure a change before
 # it lands). LUMINA_VARIANTS is a list of "name|kernel folder|flags" (folder relative to the
 # repository, empty for .devbin/shaders; flags such as "--probe-spacing 12"); LUMINA_SCENES and
-# LUMINA_PRESETS choose what is rendered. LUMINA_TIMING_SCENE (e.g. city) adds each variant's
+# LUMINA_PRESETS choose what is rendered (a scene may be SCENE@F, posed at frame F: scene_entry.sh). LUMINA_TIMING_SCENE (e.g. city) adds each variant's
 # per-pass GPU times at 1920x1080 (300 frames, medians after 100, no validation).
 # Prints "scene variant preset relMSE mean/reference" rows; writes accuracy_variants.txt under $OUT.
 #   LUMINA_VARIANTS="base||  cosine|.devbin/shaders_cos|" bash scripts/gpu/accuracy_variants.sh
@@ -12,6 +12,7 @@ set -uo pipefail
 out=${OUT:-$PWD/gpu-out}
 mkdir -p "$out"
 source scripts/gpu/prologue.sh
+source scripts/gpu/scene_entry.sh
 export LUMINA_CACHE_DIR=/tmp/lumina-cache
 lumina=.devbin/lumina
 variants=${LUMINA_VARIANTS:-"shipped||"}
@@ -31,33 +32,22 @@ figures() {
 {
   echo "commit $(cat .devbin/commit 2>/dev/null || echo unknown), $size, reference $spp spp"
   nvidia-smi --query-gpu=name,driver_version --format=csv,noheader 2>/dev/null
-  for scene in $scenes; do
-    # An animated scene at its first pose, held still: the pose its reference shows (as accuracy_table.sh;
-    # played, atrium_day's sun moved on and its means read 10 % low).
-    pose=""
-    if $lumina info "$scene" 2>/dev/null | grep '^  animation' | grep -qv ' none$'; then
-      pose="--animation-frame 0"
-    fi
-    ref=/tmp/ref_$scene.exr
-    # A reference an earlier call on this (still warm) machine made is kept: the references are most
-    # of a call's time.
-    if [ ! -s "$ref.$size.$spp" ]; then
-      timeout 600 $lumina reference "$scene" --size "$size" --spp "$spp" --pixel-centres --out "$ref" 2>&1 | tail -1
-      cp "$ref" "$ref.$size.$spp"
-    fi
-    cp "$ref.$size.$spp" "$ref"
+  for entry in $scenes; do
+    scene_entry "$entry"
+    ref=/tmp/ref_$entry_name.exr
+    cached_reference "$ref" "$size" "$spp"
     # shellcheck disable=SC2086 # pose is words
-    timeout 120 $lumina render "$scene" --technique direct --size "$size" --frames 1 $pose --exr "/tmp/direct_$scene.exr" \
-      --out "/tmp/direct_$scene.png" >/dev/null 2>&1
-    echo "$scene direct - $(figures "$ref" "/tmp/direct_$scene.exr")"
+    timeout 120 $lumina render "$scene" --technique direct --size "$size" --frames 1 $pose --exr "/tmp/direct_$entry_name.exr" \
+      --out "/tmp/direct_$entry_name.png" >/dev/null 2>&1
+    echo "$entry direct - $(figures "$ref" "/tmp/direct_$entry_name.exr")"
     for variant in $variants; do
       IFS='|' read -r name folder flags <<<"$variant"
       for preset in $presets; do
-        exr=/tmp/${scene}_${name}_$preset.exr
+        exr=/tmp/${entry_name}_${name}_$preset.exr
         # shellcheck disable=SC2086 # flags are words
         LUMINA_SHADER_DIR=$PWD/${folder:-.devbin/shaders} timeout 600 $lumina render "$scene" --preset "$preset" \
           --size "$size" $pose $flags --exr "$exr" --out /tmp/variant.png >/dev/null 2>&1
-        echo "$scene $name $preset $(figures "$ref" "$exr")"
+        echo "$entry $name $preset $(figures "$ref" "$exr")"
       done
     done
   done

@@ -10,32 +10,23 @@ set -uo pipefail
 out=${OUT:-$PWD/gpu-out}
 mkdir -p "$out/refs"
 source scripts/gpu/prologue.sh
+source scripts/gpu/scene_entry.sh
 export LUMINA_CACHE_DIR=/tmp/lumina-cache
 lumina=.devbin/lumina
 scenes=${LUMINA_SCENES:-"two_cylinder_engine atrium_day atrium city cornell_box_moving"}
 figures() { $lumina compare "$1" "$2" 2>&1 | grep -E 'relMSE|mean' | tr '\n' ' '; }
 for entry in $scenes; do
-  scene=${entry%@*}
-  name=$scene
-  frame=0
-  if [ "$entry" != "$scene" ]; then
-    frame=${entry#*@}
-    name=${scene}_frame$frame
-  fi
-  ref=$out/refs/${name}_128x128.exr
-  pose=""
-  if $lumina info "$scene" 2>/dev/null | grep '^  animation' | grep -qv ' none$'; then
-    pose="--animation-frame $frame"
-  fi
+  scene_entry "$entry"
+  ref=$out/refs/${entry_name}_128x128.exr
   /usr/bin/time -f "$entry: reference in %e s" $lumina reference "$scene" --size 128x128 --spp 65536 \
     --pixel-centres $pose --out "$ref" 2>&1 | tail -2
   for preset in low medium high; do
-    $lumina render "$scene" --preset "$preset" --size 128x128 $pose --exr "/tmp/${name}_$preset.exr" \
-      --out "/tmp/${name}_$preset.png" >/dev/null 2>&1
-    echo "$entry lumen $preset: $(figures "$ref" "/tmp/${name}_$preset.exr")"
+    $lumina render "$scene" --preset "$preset" --size 128x128 $pose --exr "/tmp/${entry_name}_$preset.exr" \
+      --out "/tmp/${entry_name}_$preset.png" >/dev/null 2>&1
+    echo "$entry lumen $preset: $(figures "$ref" "/tmp/${entry_name}_$preset.exr")"
   done
-  $lumina render "$scene" --technique direct --size 128x128 --frames 1 $pose --exr "/tmp/${name}_direct.exr" \
-    --out "/tmp/${name}_direct.png" >/dev/null 2>&1
-  echo "$entry direct: $(figures "$ref" "/tmp/${name}_direct.exr")"
+  $lumina render "$scene" --technique direct --size 128x128 --frames 1 $pose --exr "/tmp/${entry_name}_direct.exr" \
+    --out "/tmp/${entry_name}_direct.png" >/dev/null 2>&1
+  echo "$entry direct: $(figures "$ref" "/tmp/${entry_name}_direct.exr")"
 done 2>&1 | tee "$out/refs.txt"
 (cd "$out" && tar czf refs.tgz refs && rm -rf refs)
