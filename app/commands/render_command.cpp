@@ -68,6 +68,10 @@ gi::FrameRendererSettings rendererSettings(const ParsedArgs& args, const scene::
             settings.lumen->probes.raysPerProbe =
                 static_cast<uint32_t>(args.getUint("rays-per-probe", settings.lumen->probes.raysPerProbe,
                                                    gi::kMinRaysPerProbe, gi::kMaxRaysPerProbe));
+            if (args.has("adaptive-probes")) {
+                settings.lumen->probes.adaptiveProbeFraction =
+                    static_cast<float>(args.getDouble("adaptive-probes", 0.0));
+            }
             if (args.has("near-field-distance")) {
                 settings.lumen->probes.nearFieldDistance =
                     static_cast<float>(args.getDouble("near-field-distance", 0.0));
@@ -541,6 +545,9 @@ Command renderCommand() {
              {"preset", "NAME", "quality preset: low, medium or high (default: the scene's, else medium)"},
              {"probe-spacing", "N", "pixels per screen-probe edge (overrides the preset; 2..64)"},
              {"rays-per-probe", "N", "rays per screen probe (overrides the preset; 16..256)"},
+             {"adaptive-probes", "F",
+              "room for adaptive screen probes, where a pixel lies on no uniform probe's surface, as a "
+              "share of the uniform grid's probes (0..1; 0: none; default 0.25)"},
              {"near-field-distance", "D",
               "screen-probe near-field trace length in scene units; beyond it the far field (0: far field "
               "only; default: the preset's, 15 % of the scene's largest extent at low, the whole trace at "

@@ -61,10 +61,11 @@ glm::uvec2 layOutSlice(gpu::VisualiseConstants& constants, const SliceSettings& 
 
 glm::uvec2 layOutProbeTiles(gpu::VisualiseConstants& constants, const gi::ScreenProbeResources& resources,
                             uint32_t perProbe, uint32_t tileWidth) {
-    constants.probeGrid = glm::uvec2(resources.gridWidth, resources.gridHeight);
+    constants.probeGrid = glm::uvec2(resources.gridWidth, resources.probeRows());
     constants.entriesPerProbe = perProbe;
     constants.tileWidth = tileWidth;
-    return {resources.gridWidth * tileWidth, resources.gridHeight * ((perProbe + tileWidth - 1) / tileWidth)};
+    return {resources.gridWidth * tileWidth,
+            resources.probeRows() * ((perProbe + tileWidth - 1) / tileWidth)};
 }
 
 void appendSdfViews(std::vector<BufferView>& views) {

@@ -11,6 +11,7 @@ void ProbeLightingPdfPass::record(FrameContext& frame, const ScreenProbeView& vi
         .read(0, r.probes[view.current])
         .read(1, r.probes[view.previous()])
         .read(2, r.history[view.previous()])
+        .read(3, r.adaptiveIndex[view.previous()])
         .write(0, r.lightingPdf)
         .dispatch(view.groupsX(), view.groupsY());
 }

@@ -12,6 +12,7 @@ void ScreenGatherPass::record(FrameContext& frame, const ScreenProbeView& view) 
         .read(1, view.gbuffer.position)
         .read(2, r.probes[view.current])
         .read(3, r.irradiance)
+        .read(4, r.adaptiveIndex[view.current])
         .sampler(0, r.linearClamp)
         .write(0, r.gather)
         .dispatchThreads(r.width, r.height, {LUMINA_SP_SCREEN_GROUP, LUMINA_SP_SCREEN_GROUP});

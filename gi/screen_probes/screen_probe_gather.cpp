@@ -85,6 +85,8 @@ void ScreenProbeGather::uploadConstants(rhi::ICommandList& commands, const Scree
     c.probeGrid = gpu::uint2(r.gridWidth, r.gridHeight);
     c.probeSpacing = settings_.probeSpacing;
     c.probeCount = r.probeCount;
+    c.uniformProbeCount = r.uniformProbeCount;
+    c.adaptiveSpacing = r.adaptiveSpacing;
     c.imageSize = gpu::uint2(r.width, r.height);
     c.frameIndex = uint32_t(frames_);
     c.flags = flags;
@@ -170,6 +172,11 @@ void ScreenProbeGather::record(FrameContext& frame, const ScreenProbeInputs& inp
                                .sky = inputs.sky,
                                .current = current_};
     placement_.record(frame, view);
+    if (resources_.adaptiveRows > 0) {
+        adaptivePlacement_.record(frame, view);
+    } else {
+        frame.skip(ScreenProbeAdaptivePlacementPass::kName, "adaptiveProbeFraction is 0");
+    }
     // A strategy that draws no rays needs no table (spMisWeight leaves it out).
     if (brdfRays() > 0) {
         brdfPdf_.record(frame, view);

@@ -2,9 +2,9 @@
 // The screen-probe final gather (docs/screen_probes.md): the view-dependent half of the GI.
 // Records, every frame, one named and timed pass each:
 //
-//   placement -> brdf pdf -> lighting pdf -> mis directions -> trace near field -> trace far field
-//   -> shade rays -> composite -> temporal -> spatial filter -> sh irradiance -> final gather
-//   -> screen temporal
+//   placement -> adaptive placement -> brdf pdf -> lighting pdf -> mis directions -> trace near field
+//   -> trace far field -> shade rays -> composite -> temporal -> spatial filter -> sh irradiance
+//   -> final gather -> screen temporal
 //
 //   ScreenProbeGather probes(device, width, height, settings);
 //   probes.record(frame, {.gbuffer = renderer.gbuffer(), .camera = camera, .sdf = sdfs,
@@ -28,6 +28,7 @@
 #include "gi/screen_probes/probe_trace_far_field_pass.h"
 #include "gi/screen_probes/probe_trace_near_field_pass.h"
 #include "gi/screen_probes/screen_gather_pass.h"
+#include "gi/screen_probes/screen_probe_adaptive_placement_pass.h"
 #include "gi/screen_probes/screen_probe_placement_pass.h"
 #include "gi/screen_probes/screen_probe_resources.h"
 #include "gi/screen_probes/screen_temporal_pass.h"
@@ -115,6 +116,7 @@ private:
     std::vector<ChangeRegion> changes_; // until the next record()
 
     ScreenProbePlacementPass placement_;
+    ScreenProbeAdaptivePlacementPass adaptivePlacement_;
     ProbeBrdfPdfPass brdfPdf_;
     ProbeLightingPdfPass lightingPdf_;
     ProbeRayGenerationPass rayGeneration_;

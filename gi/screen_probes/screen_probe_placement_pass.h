@@ -1,5 +1,6 @@
 #pragma once
-// Pass 1: one probe per cell at the GBuffer surface its centre pixel sees; sky probes invalid.
+// Pass 1: one probe per cell at the GBuffer surface its centre pixel sees; sky probes invalid; the
+// adaptive slots emptied for the next pass.
 // Kernel: shaders/screen_probes/probe_placement.hlsl (its header says how).
 #include "gi/core/frame_context.h"
 #include "gi/screen_probes/screen_probe_view.h"

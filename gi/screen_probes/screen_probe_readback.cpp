@@ -61,7 +61,7 @@ std::vector<std::filesystem::path> dumpScreenProbeBuffers(rhi::IDevice& device,
                                                           const std::filesystem::path& directory) {
     std::filesystem::create_directories(directory);
     const ScreenProbeResources& r = gather.resources();
-    const uint32_t gw = r.gridWidth, gh = r.gridHeight, current = gather.current();
+    const uint32_t gw = r.gridWidth, gh = r.probeRows(), current = gather.current();
     std::vector<std::filesystem::path> written;
     auto exr = [&](const std::string& name, const image::Image& image) {
         written.push_back(directory / ("screen_probes_" + name + ".exr"));

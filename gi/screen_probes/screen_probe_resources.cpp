@@ -4,6 +4,8 @@
 #include "shaders/common/sdf_scene_shared.h"
 #include "shaders/screen_probes/screen_probe_shared.h"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -34,7 +36,14 @@ ScreenProbeResources ScreenProbeResources::create(rhi::IDevice& device, uint32_t
     r.height = height;
     r.gridWidth = (width + settings.probeSpacing - 1) / settings.probeSpacing;
     r.gridHeight = (height + settings.probeSpacing - 1) / settings.probeSpacing;
-    r.probeCount = r.gridWidth * r.gridHeight;
+    r.uniformProbeCount = r.gridWidth * r.gridHeight;
+    if (settings.adaptiveProbeFraction > 0.0f) {
+        r.adaptiveRows = uint32_t(std::ceil(float(r.gridHeight) * settings.adaptiveProbeFraction));
+        r.adaptiveSpacing = std::max(settings.probeSpacing / 2, 1u);
+        r.adaptiveWidth = (width + r.adaptiveSpacing - 1) / r.adaptiveSpacing;
+        r.adaptiveHeight = (height + r.adaptiveSpacing - 1) / r.adaptiveSpacing;
+    }
+    r.probeCount = r.gridWidth * r.probeRows();
     r.raysPerProbe = settings.raysPerProbe;
     const uint64_t texels = uint64_t(r.probeCount) * LUMINA_SP_PROBE_TEXELS;
     const uint64_t rays = uint64_t(r.probeCount) * r.raysPerProbe;
@@ -48,11 +57,15 @@ ScreenProbeResources ScreenProbeResources::create(rhi::IDevice& device, uint32_t
         r.history[i] = structured(device, texels, sizeof(gpu::float4), "radiance history" + half);
         r.probeAge[i] = structured(device, r.probeCount, sizeof(uint32_t), "probe age" + half);
         r.unclamped[i] = structured(device, texels, sizeof(float), "unclamped luminance" + half);
+        r.adaptiveIndex[i] =
+            structured(device, std::max(uint64_t(r.adaptiveWidth) * r.adaptiveHeight, uint64_t(1)),
+                       sizeof(uint32_t), "adaptive index" + half);
         r.screenIrradiance[i] =
             storage2d(device, rhi::Format::RGBA32_FLOAT, width, height, "screen irradiance" + half);
         r.screenPosition[i] =
             storage2d(device, rhi::Format::RGBA32_FLOAT, width, height, "screen position" + half);
     }
+    r.adaptiveCount = structured(device, 1, sizeof(uint32_t), "adaptive count");
     r.brdfPdf = structured(device, texels, sizeof(float), "brdf pdf");
     r.lightingPdf = structured(device, texels, sizeof(float), "lighting pdf");
     r.rays = structured(device, rays, sizeof(gpu::ProbeRay), "rays");
@@ -63,7 +76,7 @@ ScreenProbeResources ScreenProbeResources::create(rhi::IDevice& device, uint32_t
     r.filtered = structured(device, texels, sizeof(gpu::float4), "filtered radiance");
     r.sh = structured(device, uint64_t(r.probeCount) * LUMINA_SH_COEFFICIENTS, sizeof(gpu::float4), "sh");
     r.irradiance = storage2d(device, rhi::Format::RGBA32_FLOAT, r.gridWidth * LUMINA_SP_IRRADIANCE_TILE,
-                             r.gridHeight * LUMINA_SP_IRRADIANCE_TILE, "irradiance atlas");
+                             r.probeRows() * LUMINA_SP_IRRADIANCE_TILE, "irradiance atlas");
     r.gather = storage2d(device, rhi::Format::RGBA32_FLOAT, width, height, "gather");
     r.noVoxelLighting = device.createTexture({.dimension = rhi::TextureDimension::Texture3D,
                                               .format = rhi::Format::RGBA16_FLOAT,

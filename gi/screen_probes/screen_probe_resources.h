@@ -13,12 +13,24 @@ namespace lumina::gi {
 
 struct ScreenProbeResources {
     uint32_t width = 0, height = 0;         // full resolution
-    uint32_t gridWidth = 0, gridHeight = 0; // probes across and down
+    uint32_t gridWidth = 0, gridHeight = 0; // the uniform grid's probes across and down
+    // Probe slots: the uniform grid's (gridWidth x gridHeight), then adaptiveRows rows of gridWidth
+    // adaptive slots below it. Every per-probe buffer and the irradiance atlas hold probeCount.
+    uint32_t uniformProbeCount = 0;
+    uint32_t adaptiveRows = 0;
     uint32_t probeCount = 0;
+    // Adaptive tiles: adaptiveSpacing (probeSpacing / 2) pixels a side, adaptiveWidth x adaptiveHeight
+    // of them; all 0 when adaptive probes are off.
+    uint32_t adaptiveSpacing = 0, adaptiveWidth = 0, adaptiveHeight = 0;
+    uint32_t probeRows() const { return gridHeight + adaptiveRows; }
     uint32_t raysPerProbe = 0;
 
-    rhi::BufferHandle constants;                // ScreenProbeConstants
-    std::array<rhi::BufferHandle, 2> probes;    // ScreenProbe[probeCount], this frame's and last frame's
+    rhi::BufferHandle constants;             // ScreenProbeConstants
+    std::array<rhi::BufferHandle, 2> probes; // ScreenProbe[probeCount], this frame's and last frame's
+    rhi::BufferHandle adaptiveCount;         // uint[1]: adaptive slots taken this frame
+    // uint[adaptiveWidth x adaptiveHeight] (at least 1): each adaptive tile's probe slot or
+    // LUMINA_SP_NO_ADAPTIVE_PROBE; last frame's finds the history of adaptive probes.
+    std::array<rhi::BufferHandle, 2> adaptiveIndex;
     rhi::BufferHandle brdfPdf;                  // float[probeCount x 64]: texel probabilities
     rhi::BufferHandle lightingPdf;              // float[probeCount x 64]
     rhi::BufferHandle rays;                     // ProbeRay[probeCount x raysPerProbe]

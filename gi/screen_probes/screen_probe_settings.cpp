@@ -38,6 +38,7 @@ void ScreenProbeSettings::validate() const {
         bad("raysPerProbe", std::to_string(raysPerProbe),
             (std::to_string(kMinRaysPerProbe) + " .. " + std::to_string(kMaxRaysPerProbe)).c_str());
     }
+    checkRange("adaptiveProbeFraction", adaptiveProbeFraction, 0.0f, 1.0f, false, "0 .. 1 (0: none)");
     checkRange("brdfRayFraction", brdfRayFraction, 0.0f, 1.0f, false, "0 .. 1");
     checkRange("lightingPdfFloor", lightingPdfFloor, 0.0f, 1.0f, true, "0 < floor <= 1");
     checkRange("maxTraceDistance", maxTraceDistance, 0.0f, 1e30f, false,

@@ -13,7 +13,12 @@ inline constexpr uint32_t kMinRaysPerProbe = 16;
 inline constexpr uint32_t kMaxRaysPerProbe = 256; // LUMINA_SP_MAX_RAYS
 
 struct ScreenProbeSettings {
-    uint32_t probeSpacing = 8;    // pixels per probe edge: one probe per spacing x spacing pixels
+    uint32_t probeSpacing = 8; // pixels per probe edge: one probe per spacing x spacing pixels
+    // Room for adaptive probes (probe_adaptive_placement.hlsl), as a share of the uniform grid's
+    // probes (0 .. 1; 0: none). They go where a pixel lies on no uniform probe's surface, at most one
+    // per (probeSpacing / 2)^2 pixels; only those placed cost rays. A quarter held every built-in
+    // scene's at 256 x 256 (docs/screen_probes.md).
+    float adaptiveProbeFraction = 0.25f;
     uint32_t raysPerProbe = 64;   // 16 .. 256
     float brdfRayFraction = 0.5f; // share of the rays drawn from the BRDF PDF; the rest from the lighting PDF
     float lightingPdfFloor = 0.1f; // share of the lighting PDF spread uniformly over the hemisphere, so

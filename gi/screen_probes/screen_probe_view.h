@@ -20,9 +20,9 @@ struct ScreenProbeView {
     uint32_t current = 0;                           // index into the ping-pong pairs
 
     uint32_t previous() const { return current ^ 1u; }
-    // Per-probe passes: one group of 64 threads per probe, over the probe grid.
+    // Per-probe passes: one group of 64 threads per probe slot, over the grid and the adaptive rows.
     uint32_t groupsX() const { return resources.gridWidth; }
-    uint32_t groupsY() const { return resources.gridHeight; }
+    uint32_t groupsY() const { return resources.probeRows(); }
 };
 
 } // namespace lumina::gi

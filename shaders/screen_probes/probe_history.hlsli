@@ -5,20 +5,48 @@
 //
 //   StructuredBuffer<ScreenProbe> gPreviousProbes;   // last frame's probes
 //   StructuredBuffer<float4> gPreviousHistory;       // probe_temporal's output of last frame
+//   StructuredBuffer<uint> gPreviousAdaptiveIndex;   // probe_adaptive_placement's index of last frame
 #include "screen_probes/screen_probe_common.hlsli"
 
-// The old probe whose history `current` continues: the one its position reprojects to, if it saw
-// the same surface (historyMatches); else -1.
-int historyProbe(ScreenProbe current) {
+// The uniform probe of the cell `current`'s position reprojects to last frame, if it saw the same
+// surface (historyMatches); else -1.
+int uniformHistoryProbe(ScreenProbe current) {
     const int candidate = historyProbeCandidate(current.positionAndDepth.xyz);
     return candidate >= 0 && historyMatches(current, gPreviousProbes[candidate]) ? candidate : -1;
 }
 
-// Where texel t of the history of `current` (frame f) lies in last frame's buffers: historyProbe's
-// texel in the same world direction; -1 where there is none (no history, a probe that moved, a
-// direction below the old probe's plane).
-int historyTexelIndex(ScreenProbe current, ProbeFrame f, uint t) {
-    const int candidate = historyProbe(current);
+// The adaptive probe of the adaptive tile `current`'s position reprojects to last frame, if it saw
+// the same surface; else -1.
+int adaptiveHistoryProbe(ScreenProbe current) {
+    float2 pixel;
+    if (gSp.adaptiveSpacing == 0u || !hasFlag(LUMINA_SP_FLAG_PROBE_HISTORY) ||
+        !previousPixel(current.positionAndDepth.xyz, pixel)) {
+        return -1;
+    }
+    const uint2 tiles = adaptiveGrid();
+    const uint2 tile = min(uint2(pixel) / gSp.adaptiveSpacing, tiles - 1u);
+    const uint old = gPreviousAdaptiveIndex[tile.y * tiles.x + tile.x];
+    const bool matches = old != LUMINA_SP_NO_ADAPTIVE_PROBE && historyMatches(current, gPreviousProbes[old]);
+    return matches ? int(old) : -1;
+}
+
+// The old probe whose history `current` (in slot `probe`) continues: a uniform probe looks first
+// among last frame's uniform probes, an adaptive one among the adaptive ones (its surface is one no
+// uniform probe saw), and each then in the other kind; -1 when neither saw its surface.
+int historyProbe(ScreenProbe current, uint probe) {
+    const bool adaptive = isAdaptiveProbe(probe);
+    const int first = adaptive ? adaptiveHistoryProbe(current) : uniformHistoryProbe(current);
+    if (first >= 0) {
+        return first;
+    }
+    return adaptive ? uniformHistoryProbe(current) : adaptiveHistoryProbe(current);
+}
+
+// Where texel t of the history of `current` (slot `probe`, frame f) lies in last frame's buffers:
+// historyProbe's texel in the same world direction; -1 where there is none (no history, a probe
+// that moved, a direction below the old probe's plane).
+int historyTexelIndex(ScreenProbe current, uint probe, ProbeFrame f, uint t) {
+    const int candidate = historyProbe(current, probe);
     if (candidate < 0) {
         return -1;
     }
@@ -27,8 +55,8 @@ int historyTexelIndex(ScreenProbe current, ProbeFrame f, uint t) {
 }
 
 // That texel's radiance history; zero (weight 0) where there is none.
-float4 historyTexel(ScreenProbe current, ProbeFrame f, uint t) {
-    const int index = historyTexelIndex(current, f, t);
+float4 historyTexel(ScreenProbe current, uint probe, ProbeFrame f, uint t) {
+    const int index = historyTexelIndex(current, probe, f, t);
     return index >= 0 ? gPreviousHistory[uint(index)] : float4(0.0, 0.0, 0.0, 0.0);
 }
 

@@ -10,6 +10,7 @@
 StructuredBuffer<ScreenProbe> gProbes : register(t0);
 StructuredBuffer<ScreenProbe> gPreviousProbes : register(t1);
 StructuredBuffer<float4> gPreviousHistory : register(t2); // probe_temporal's output of last frame
+StructuredBuffer<uint> gPreviousAdaptiveIndex : register(t3); // last frame's adaptive tiles' probes
 RWStructuredBuffer<float> gLightingPdf : register(u0);   // LUMINA_SP_PROBE_TEXELS per probe, summing to 1
 #include "screen_probes/probe_history.hlsli"
 
@@ -25,7 +26,7 @@ groupshared float gsSolidAngle[LUMINA_SP_PROBE_TEXELS];
     const ProbeFrame frame = probeFrame(current.normal.xyz);
     const float solidAngle = texelSolidAngle(t);
 
-    const float4 radiance = historyTexel(current, frame, t);
+    const float4 radiance = historyTexel(current, probe, frame, t);
     const float l = spLightingPdfLuminance(luminance(radiance.rgb));
     // History is sanitised when written; the check keeps a bad table from sampling nothing.
     const float mass = radiance.a > 0.0 && l > 0.0 && !isinf(l) ? l * solidAngle : 0.0;

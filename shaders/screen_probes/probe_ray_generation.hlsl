@@ -50,6 +50,7 @@ uint findTexel(bool brdf, float u) {
     }
     GroupMemoryBarrierWithGroupSync();
     const ProbeFrame frame = probeFrame(gProbes[probe].normal.xyz);
+    const uint seed = spProbeSeed(probe, gSp.uniformProbeCount, gProbes[probe].info.yz, gSp.imageSize.x);
     const uint rayCount = gSp.raysPerProbe;
     const uint brdfRays = gSp.brdfRays;
     const float nBrdf = float(brdfRays);
@@ -59,7 +60,7 @@ uint findTexel(bool brdf, float u) {
         const uint strategy = fromBrdf ? LUMINA_SP_STRATEGY_BRDF : LUMINA_SP_STRATEGY_LIGHTING;
         const uint local = fromBrdf ? r : r - brdfRays;
         const uint count = fromBrdf ? brdfRays : gSp.lightingRays;
-        const float2 u = spSamplePoint(local, count, gSp.frameIndex, probe, strategy);
+        const float2 u = spSamplePoint(local, count, gSp.frameIndex, seed, strategy);
         const uint k = findTexel(fromBrdf, u.x);
         const float before = fromBrdf ? gsBrdfCdf[k] : gsLightCdf[k];
         const SpTableSample s = spTableSampleAt(k, before, fromBrdf ? gsBrdf[k] : gsLight[k], u);

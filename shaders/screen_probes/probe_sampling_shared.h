@@ -67,6 +67,13 @@ LUMINA_INLINE float2 spSamplePoint(uint i, uint n, uint frame, uint probe, uint 
     return float2(min(LUMINA_SP_FRAC(h.x + r.x), 0.99999994f), min(LUMINA_SP_FRAC(h.y + r.y), 0.99999994f));
 }
 
+// The number that seeds a probe's directions (spSamplePoint's `probe`): a uniform probe's slot; an
+// adaptive probe's slot (from uniformCount on) depends on the order its tile's thread ran in
+// (probe_adaptive_placement.hlsl), so its pixel seeds it instead, numbered past every uniform slot.
+LUMINA_INLINE uint spProbeSeed(uint slot, uint uniformCount, uint2 pixel, uint imageWidth) {
+    return slot < uniformCount ? slot : uniformCount + pixel.y * imageWidth + pixel.x;
+}
+
 // The luminance the lighting PDF weighs a texel by (probe_lighting_pdf.hlsl), cut to 4 mantissa
 // bits: within 1/16 of itself. The APIs round last frame's radiance differently by an ULP here and
 // there; on the full value that moved a texel's probability, the same random numbers drew other

@@ -1,6 +1,7 @@
 // lumina-kernel: cs main
 // Pass 9, spatial filter: each texel of a probe's accumulated radiance averaged with the same
-// world direction in its four grid neighbours (a cross-bilateral filter over the probe grid). The
+// world direction in its four grid neighbours (a cross-bilateral filter over the probe grid; an
+// adaptive probe takes the uniform probes of its cell and that cell's four neighbours). The
 // centre weighs 1; a neighbour exp(-plane distance / (filterPlaneScale x view depth)) x
 // max(0, n . n')^filterNormalPower, so light does not bleed across depth or orientation edges. Texels with
 // no data (weight 0) take no part. One group per probe, one thread per texel.
@@ -36,9 +37,11 @@ RWStructuredBuffer<float4> gFiltered : register(u0); // rgb: radiance; a: 1 wher
     float3 sum = own.a > 0.0 ? own.rgb : float3(0.0, 0.0, 0.0);
     float weight = own.a > 0.0 ? 1.0 : 0.0;
     const float youth = own.a > 0.0 && age > 0u ? exp2(float(age) * log2(1.0 - gSp.probeHistoryBlend)) : 1.0;
-    const int2 offsets[4] = {int2(-1, 0), int2(1, 0), int2(0, -1), int2(0, 1)};
-    const int2 cell = int2(group.xy);
-    for (uint k = 0u; k < 4u; ++k) {
+    // An adaptive probe's neighbours are the uniform probe of the cell it lies in and that cell's four.
+    const int2 offsets[5] = {int2(0, 0), int2(-1, 0), int2(1, 0), int2(0, -1), int2(0, 1)};
+    const bool adaptive = isAdaptiveProbe(probe);
+    const int2 cell = adaptive ? int2(centre.info.yz / gSp.probeSpacing) : int2(group.xy);
+    for (uint k = adaptive ? 0u : 1u; k < 5u; ++k) {
         const int2 at = cell + offsets[k];
         if (any(at < 0) || any(at >= int2(gSp.probeGrid))) {
             continue;

@@ -24,6 +24,7 @@ StructuredBuffer<float4> gFrameRadiance : register(t2);   // probe_composite's o
 StructuredBuffer<float4> gPreviousHistory : register(t3); // this pass's output last frame
 StructuredBuffer<uint> gPreviousProbeAge : register(t4);  // this pass's ages last frame
 StructuredBuffer<float> gPreviousUnclamped : register(t5); // this pass's unclamped means last frame
+StructuredBuffer<uint> gPreviousAdaptiveIndex : register(t6); // last frame's adaptive tiles' probes
 RWStructuredBuffer<float4> gHistory : register(u0);
 RWStructuredBuffer<uint> gProbeAge : register(u1);
 RWStructuredBuffer<float> gUnclamped : register(u2); // luminance mean of the values before the clamp
@@ -39,14 +40,14 @@ groupshared float gsSolidAngle[LUMINA_SP_PROBE_TEXELS];
     }
     const ScreenProbe current = gProbes[probe];
     const ProbeFrame frame = probeFrame(current.normal.xyz);
-    const int historyIndex = historyTexelIndex(current, frame, t);
+    const int historyIndex = historyTexelIndex(current, probe, frame, t);
     const float4 history =
         historyIndex >= 0 ? gPreviousHistory[uint(historyIndex)] : float4(0.0, 0.0, 0.0, 0.0);
     // Read only beside a history texel this pass wrote (weight > 0), which it wrote with it.
     const float unclamped = history.a > 0.0 ? gPreviousUnclamped[uint(historyIndex)] : 0.0;
     const float keep = historyKeep(current.positionAndDepth.xyz);
     if (t == 0u) {
-        const int previous = historyProbe(current);
+        const int previous = historyProbe(current, probe);
         gProbeAge[probe] =
             previous < 0 ? 0u
                          : min(uint(float(gPreviousProbeAge[previous]) * keep) + 1u, LUMINA_SP_MAX_PROBE_AGE);

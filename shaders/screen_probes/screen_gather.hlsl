@@ -3,7 +3,12 @@
 // bilinear in the probe grid x exp(-plane distance / (filterPlaneScale x view depth)) x
 // max(0, n . n_probe)^filterNormalPower, so a pixel reads probes on its own surface; each probe's tile of
 // the irradiance atlas is sampled (hardware bilinear, the border makes it seamless) in the pixel's
-// normal direction. Where no probe passes, the bilinear weights of the valid ones alone are used.
+// normal direction. A pixel whose best corner probe weighs less than LUMINA_SP_ADAPTIVE_COVERAGE
+// lies on no probe's surface (a thin wall between a jamb and a door, a silhouette against the sky):
+// it also reads the adaptive probes of the 3 x 3 adaptive tiles around it, each weighted by a tent
+// over two tiles' distance from the probe's pixel x its surface weight, faded in as the best corner
+// weight falls below the threshold so that no seam shows where it starts. Where no probe passes,
+// the bilinear weights of the valid ones alone are used.
 // Sky pixels get none. One thread per pixel; output irradiance, in the scene's radiance units x
 // steradian (pi L under a uniform radiance L).
 #include "screen_probes/screen_probe_common.hlsli"
@@ -12,6 +17,7 @@ Texture2D<float4> gNormal : register(t0);
 Texture2D<float4> gPosition : register(t1);
 StructuredBuffer<ScreenProbe> gProbes : register(t2);
 Texture2D<float4> gIrradiance : register(t3);
+StructuredBuffer<uint> gAdaptiveIndex : register(t4); // per adaptive tile: its probe or none
 SamplerState gLinearClamp : register(s0);
 LUMINA_UAV_FORMAT(rgba32f) RWTexture2D<float4> gGather : register(u0); // rgb: irradiance; a: 1 on surfaces
 
@@ -22,7 +28,9 @@ float3 sampleProbe(uint probe, float3 n) {
     const float2 tile = float2(probe % gSp.probeGrid.x, probe / gSp.probeGrid.x) * float(LUMINA_SP_IRRADIANCE_TILE);
     const float2 e = octEncode(n);
     const float2 texel = tile + 1.0 + (e * 0.5 + 0.5) * float(LUMINA_SP_IRRADIANCE_SIZE);
-    const float2 atlas = float2(gSp.probeGrid) * float(LUMINA_SP_IRRADIANCE_TILE);
+    // The atlas holds every slot's tile: the uniform grid's rows, then the adaptive rows.
+    const float2 atlas =
+        float2(gSp.probeGrid.x, gSp.probeCount / gSp.probeGrid.x) * float(LUMINA_SP_IRRADIANCE_TILE);
     return gIrradiance.SampleLevel(gLinearClamp, texel / atlas, 0.0).rgb;
 }
 
@@ -37,31 +45,45 @@ float3 sampleProbe(uint probe, float3 n) {
         return;
     }
     const float3 n = normalize(normal.xyz);
-    const float2 g = (float2(id.xy) + 0.5) / float(gSp.probeSpacing) - 0.5;
-    const int2 base = int2(floor(g));
-    const float2 f = g - float2(base);
     float3 surfaceSum = float3(0.0, 0.0, 0.0);
     float surfaceWeight = 0.0;
     float3 plainSum = float3(0.0, 0.0, 0.0);
     float plainWeight = 0.0;
+    float best = 0.0;
     for (uint k = 0u; k < 4u; ++k) {
-        const int2 corner = int2(k & 1u, k >> 1u);
-        const int2 cell = clamp(base + corner, int2(0, 0), int2(gSp.probeGrid) - 1);
-        const uint probe = uint(cell.y) * gSp.probeGrid.x + uint(cell.x);
+        float bilinear;
+        const uint probe = uniformCorner(id.xy, k, bilinear);
         const ScreenProbe p = gProbes[probe];
-        if (!probeIsValid(p)) {
-            continue;
+        if (probeIsValid(p)) {
+            const float surface = probeSurfaceWeight(p, position, n);
+            const float3 irradiance = sampleProbe(probe, n);
+            surfaceSum += bilinear * surface * irradiance;
+            surfaceWeight += bilinear * surface;
+            plainSum += bilinear * irradiance;
+            plainWeight += bilinear;
+            best = max(best, surface);
         }
-        const float2 bw = lerp(1.0 - f, f, float2(corner));
-        const float bilinear = bw.x * bw.y;
-        const float planeDistance = abs(dot(position.xyz - p.positionAndDepth.xyz, p.normal.xyz));
-        const float surface = exp(-planeDistance / (gSp.filterPlaneScale * position.w)) *
-                              pow(saturate(dot(n, p.normal.xyz)), gSp.filterNormalPower);
-        const float3 irradiance = sampleProbe(probe, n);
-        surfaceSum += bilinear * surface * irradiance;
-        surfaceWeight += bilinear * surface;
-        plainSum += bilinear * irradiance;
-        plainWeight += bilinear;
+    }
+    if (gSp.adaptiveSpacing > 0u && best < LUMINA_SP_ADAPTIVE_COVERAGE) {
+        const float fade = 1.0 - best / LUMINA_SP_ADAPTIVE_COVERAGE;
+        const float reach = 2.0 * float(gSp.adaptiveSpacing);
+        const uint2 tiles = adaptiveGrid();
+        const int2 tile = int2(id.xy / gSp.adaptiveSpacing);
+        for (uint j = 0u; j < 9u; ++j) {
+            const int2 at = tile + int2(int(j % 3u) - 1, int(j / 3u) - 1);
+            const bool inside = all(at >= 0) && all(at < int2(tiles));
+            const uint probe =
+                inside ? gAdaptiveIndex[uint(at.y) * tiles.x + uint(at.x)] : LUMINA_SP_NO_ADAPTIVE_PROBE;
+            if (probe != LUMINA_SP_NO_ADAPTIVE_PROBE) {
+                const ScreenProbe p = gProbes[probe];
+                const float distance = length(float2(id.xy) - float2(p.info.yz));
+                const float w = fade * saturate(1.0 - distance / reach) * probeSurfaceWeight(p, position, n);
+                if (w > 0.0) {
+                    surfaceSum += w * sampleProbe(probe, n);
+                    surfaceWeight += w;
+                }
+            }
+        }
     }
     float3 result = float3(0.0, 0.0, 0.0);
     if (surfaceWeight > LUMINA_SP_MIN_GATHER_WEIGHT) {

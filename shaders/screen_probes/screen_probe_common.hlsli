@@ -18,6 +18,39 @@ bool probeIsValid(ScreenProbe probe) {
     return (probe.info.x & LUMINA_SP_PROBE_VALID) != 0u;
 }
 
+// Slots from uniformProbeCount on hold adaptive probes (probe_adaptive_placement.hlsl).
+bool isAdaptiveProbe(uint probe) {
+    return probe >= gSp.uniformProbeCount;
+}
+
+// Adaptive tiles across and down (none when adaptive probes are off).
+uint2 adaptiveGrid() {
+    const uint s = max(gSp.adaptiveSpacing, 1u);
+    return gSp.adaptiveSpacing > 0u ? (gSp.imageSize + s - 1u) / s : uint2(0u, 0u);
+}
+
+// How surely a pixel at `position` (w: view depth) with unit normal n lies on probe p's surface:
+// exp(-plane distance / (filterPlaneScale x view depth)) x max(0, n . n_p)^filterNormalPower. The gather
+// weighs probes by it; adaptive placement puts a probe where the uniform grid offers no good one.
+float probeSurfaceWeight(ScreenProbe p, float4 position, float3 n) {
+    const float planeDistance = abs(dot(position.xyz - p.positionAndDepth.xyz, p.normal.xyz));
+    return exp(-planeDistance / (gSp.filterPlaneScale * position.w)) *
+           pow(saturate(dot(n, p.normal.xyz)), gSp.filterNormalPower);
+}
+
+// Corner k (0..3) of the uniform probe cell around pixel centre `pixel`: the probe's index and its
+// bilinear weight.
+uint uniformCorner(uint2 pixel, uint k, out float bilinear) {
+    const float2 g = (float2(pixel) + 0.5) / float(gSp.probeSpacing) - 0.5;
+    const int2 base = int2(floor(g));
+    const float2 f = g - float2(base);
+    const int2 corner = int2(k & 1u, k >> 1u);
+    const int2 cell = clamp(base + corner, int2(0, 0), int2(gSp.probeGrid) - 1);
+    const float2 bw = lerp(1.0 - f, f, float2(corner));
+    bilinear = bw.x * bw.y;
+    return uint(cell.y) * gSp.probeGrid.x + uint(cell.x);
+}
+
 bool hasFlag(uint flag) {
     return (gSp.flags & flag) != 0u;
 }

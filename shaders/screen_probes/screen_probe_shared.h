@@ -37,12 +37,19 @@ LUMINA_GPU_NAMESPACE_BEGIN
 // 300 frames.
 #define LUMINA_SP_UNCLAMPED_CAP 4.0f
 
-// ScreenProbe::info.x
 // World boxes where the scene changed since the last frame (a moved object's old and new place, a
 // changed light's reach): history inside them keeps only a fraction of its weight.
 #define LUMINA_SP_MAX_CHANGE_REGIONS 8u
 
+// ScreenProbe::info.x
 #define LUMINA_SP_PROBE_VALID 1u
+
+// Adaptive probes (probe_adaptive_placement.hlsl): a pixel whose best corner probe of the uniform grid
+// has a surface weight below this lies on no probe's surface; its adaptive tile gets a probe of its own.
+#define LUMINA_SP_ADAPTIVE_COVERAGE 0.25f
+// An adaptive tile's entry in the adaptive index when it has no probe.
+#define LUMINA_SP_NO_ADAPTIVE_PROBE 0xffffffffu
+
 // ScreenProbeConstants::flags
 #define LUMINA_SP_FLAG_PROBE_HISTORY 1u  // the previous frame's probes and radiance may be reused
 #define LUMINA_SP_FLAG_SCREEN_HISTORY 2u // the previous frame's gathered irradiance may be reused
@@ -97,7 +104,7 @@ struct ScreenProbeConstants {
     // The probe grid.
     uint2 probeGrid;   // probes across and down
     uint probeSpacing; // pixels between probe centres (a cell's edge)
-    uint probeCount;   // probeGrid.x * probeGrid.y
+    uint probeCount;   // every probe slot: the uniform grid's, then the adaptive rows' (probeGrid.x wide)
     // The image and the frame.
     uint2 imageSize; // pixels
     uint frameIndex; // jitters the ray directions from frame to frame
@@ -134,8 +141,8 @@ struct ScreenProbeConstants {
     uint changeRegionCount;       // regions in use, at most LUMINA_SP_MAX_CHANGE_REGIONS
     float outlierClampTexelShare; // the outlier clamp's share of a texel's unclamped mean
                                   // (ScreenProbeSettings), here to keep the layout
-    uint changePadding1;
-    uint changePadding2;
+    uint uniformProbeCount;       // probeGrid.x * probeGrid.y: adaptive probes' slots start here
+    uint adaptiveSpacing;         // pixels per adaptive tile edge (probeSpacing / 2); 0: no adaptive probes
     ChangeRegion changeRegions[LUMINA_SP_MAX_CHANGE_REGIONS];
 };
 

@@ -128,28 +128,31 @@ uint64_t nonFiniteValues(const image::Image& image) {
     return count;
 }
 
-// Zeroes the tiles of invalid probes in a per-probe image (one tile per probe, probe (x, y) at
-// tile (x, y)).
-image::Image zeroInvalidProbes(image::Image image, const std::vector<gpu::ScreenProbe>& probes,
-                               uint32_t gridWidth, uint32_t gridHeight) {
-    const uint32_t tileWidth = image.width() / gridWidth, tileHeight = image.height() / gridHeight;
-    for (uint32_t p = 0; p < probes.size(); ++p) {
-        if (probes[p].info.x == LUMINA_SP_PROBE_VALID) {
-            continue;
-        }
+// The uniform grid's tiles of a per-probe image (one tile per probe slot, slot (x, y) at tile (x, y),
+// probeRows rows of them), with the tiles of invalid probes zeroed. The adaptive rows are left out:
+// which slot an adaptive probe takes depends on thread order (probe_adaptive_placement.hlsl), so
+// they differ from run to run while the image they make does not.
+image::Image zeroInvalidProbes(const image::Image& image, const std::vector<gpu::ScreenProbe>& probes,
+                               uint32_t gridWidth, uint32_t gridHeight, uint32_t probeRows) {
+    const uint32_t tileWidth = image.width() / gridWidth, tileHeight = image.height() / probeRows;
+    image::Image out(image.width(), gridHeight * tileHeight, image.channelNames());
+    for (uint32_t p = 0; p < gridWidth * gridHeight; ++p) {
+        const bool valid = probes[p].info.x == LUMINA_SP_PROBE_VALID;
         for (const std::string& name : image.channelNames()) {
             for (uint32_t y = 0; y < tileHeight; ++y) {
                 for (uint32_t x = 0; x < tileWidth; ++x) {
-                    image.set(name, (p % gridWidth) * tileWidth + x, (p / gridWidth) * tileHeight + y, 0.0f);
+                    const uint32_t ix = (p % gridWidth) * tileWidth + x,
+                                   iy = (p / gridWidth) * tileHeight + y;
+                    out.set(name, ix, iy, valid ? image.at(name, ix, iy) : 0.0f);
                 }
             }
         }
     }
-    return image;
+    return out;
 }
 
 // Probe positions into the scene's bounds ([0, 1] along its longest side) and view depth by the
-// same scale; normals with the valid flag in A.
+// same scale; normals with the valid flag in A. The uniform grid's only (zeroInvalidProbes says why).
 std::pair<image::Image, image::Image> placementImages(const std::vector<gpu::ScreenProbe>& probes,
                                                       uint32_t gridWidth, uint32_t gridHeight,
                                                       const scene::Bounds& bounds) {
@@ -157,7 +160,7 @@ std::pair<image::Image, image::Image> placementImages(const std::vector<gpu::Scr
     const float scale = 1.0f / std::max({size.x, size.y, size.z});
     image::Image position(gridWidth, gridHeight, {"R", "G", "B", "A"});
     image::Image normal(gridWidth, gridHeight, {"R", "G", "B", "A"});
-    for (uint32_t p = 0; p < probes.size(); ++p) {
+    for (uint32_t p = 0; p < gridWidth * gridHeight; ++p) {
         const uint32_t x = p % gridWidth, y = p / gridWidth;
         const bool valid = probes[p].info.x == LUMINA_SP_PROBE_VALID;
         const glm::vec3 at =
@@ -200,17 +203,17 @@ struct PerRayImages {
 
 PerRayImages readPerRayImages(rhi::IDevice& device, const gi::ScreenProbeGather& gather) {
     const gi::ScreenProbeResources& r = gather.resources();
-    const uint32_t gw = r.gridWidth, gh = r.gridHeight, current = gather.current();
+    const uint32_t gw = r.gridWidth, gh = r.gridHeight, rows = r.probeRows(), current = gather.current();
     PerRayImages out;
     out.probes = rhi::readBufferAs<gpu::ScreenProbe>(device, *r.probes[current]);
     const auto perRay = [&](const rhi::BufferHandle& buffer) {
         return zeroInvalidProbes(
-            gi::probeRayImage(rhi::readBufferAs<gpu::float4>(device, *buffer), r.raysPerProbe, gw, gh),
-            out.probes, gw, gh);
+            gi::probeRayImage(rhi::readBufferAs<gpu::float4>(device, *buffer), r.raysPerProbe, gw, rows),
+            out.probes, gw, gh, rows);
     };
     const auto perTexel = [&](const rhi::BufferHandle& buffer) {
-        return zeroInvalidProbes(gi::probeMapImage(rhi::readBufferAs<gpu::float4>(device, *buffer), gw, gh),
-                                 out.probes, gw, gh);
+        return zeroInvalidProbes(gi::probeMapImage(rhi::readBufferAs<gpu::float4>(device, *buffer), gw, rows),
+                                 out.probes, gw, gh, rows);
     };
     out.rays = perRay(r.rayRadiance);
     out.nearField = perRay(r.nearField);
@@ -255,7 +258,7 @@ TEST_P(FrameGoldenTest, ScreenProbePassesSurfaceCacheLayersAndFrameMatchTheirGol
     h.render(kFrames - kEarlyFrames);
     const PerRayImages late = readPerRayImages(device(), gather);
     const std::vector<gpu::ScreenProbe>& probes = late.probes;
-    const image::Image atlas = zeroInvalidProbes(h.read(r.irradiance), probes, gw, gh);
+    const image::Image atlas = zeroInvalidProbes(h.read(r.irradiance), probes, gw, gh, r.probeRows());
     const image::Image screenGather = h.read(r.gather);
     const image::Image screenResult = h.read(r.screenIrradiance[gather.current()]);
     const image::Image hdr = h.hdr();

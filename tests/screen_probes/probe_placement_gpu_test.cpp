@@ -71,8 +71,106 @@ TEST_P(ProbePlacementGpuTest, PlacementPutsProbesOnTheGBufferSurfaceAndMarksSkyI
             EXPECT_NEAR(glm::length(glm::vec3(p.normal) - expected), 0.0f, 1e-5f) << where;
         }
     }
-    EXPECT_GE(valid, r.probeCount / 8) << "the box";
-    EXPECT_GE(sky, r.probeCount / 4) << "the sky around it";
+    EXPECT_GE(valid, r.uniformProbeCount / 8) << "the box";
+    EXPECT_GE(sky, r.uniformProbeCount / 4) << "the sky around it";
+}
+
+// A pixel's coverage: the best surface weight (probeSurfaceWeight) among the valid uniform probes
+// at the corners of its cell, as the adaptive placement and the gather compute it.
+float uniformCoverage(const std::vector<gpu::ScreenProbe>& probes, const gi::ScreenProbeResources& r,
+                      const gi::ScreenProbeSettings& s, glm::uvec2 pixel, glm::vec4 position, glm::vec3 n) {
+    const glm::vec2 g = (glm::vec2(pixel) + 0.5f) / float(s.probeSpacing) - 0.5f;
+    const glm::ivec2 base(glm::floor(g));
+    float best = 0.0f;
+    for (int k = 0; k < 4; ++k) {
+        const glm::ivec2 cell = glm::clamp(base + glm::ivec2(k & 1, k >> 1), glm::ivec2(0),
+                                           glm::ivec2(r.gridWidth, r.gridHeight) - 1);
+        const gpu::ScreenProbe& p = probes[size_t(cell.y) * r.gridWidth + size_t(cell.x)];
+        if (p.info.x != LUMINA_SP_PROBE_VALID) {
+            continue;
+        }
+        const float plane =
+            std::abs(glm::dot(glm::vec3(position) - glm::vec3(p.positionAndDepth), glm::vec3(p.normal)));
+        const float weight =
+            std::exp(-plane / (s.filterPlaneScale * position.w)) *
+            std::pow(std::clamp(glm::dot(n, glm::vec3(p.normal)), 0.0f, 1.0f), s.filterNormalPower);
+        best = std::max(best, weight);
+    }
+    return best;
+}
+
+// Adaptive placement, checked against the CPU: each adaptive tile whose least covered surface pixel
+// is covered below LUMINA_SP_ADAPTIVE_COVERAGE holds one adaptive probe, at that pixel (its GBuffer
+// position and normal), in a slot of the adaptive rows that no other tile holds; a tile whose pixels
+// are all covered holds none; no slot is valid that no tile names. cornellWithSky gives both: the
+// box's silhouette, whose cell centres see the sky, and its blocks' narrow faces.
+TEST_P(ProbePlacementGpuTest, AdaptiveProbesGoWhereNoUniformProbeCoversAPixel) {
+    LUMINA_REQUIRE_KERNELS();
+    ScreenProbeHarness harness(device(), shaders(), cornellWithSky(), kSize, kSize);
+    harness.render();
+    const gi::ScreenProbeResources& r = harness.probes().resources();
+    const gi::ScreenProbeSettings& s = harness.probes().settings();
+    ASSERT_EQ(r.adaptiveSpacing, 4u);
+    ASSERT_EQ(r.adaptiveRows, 2u) << "a quarter of 8 rows";
+    const uint32_t c = harness.probes().current();
+    const auto probes = harness.read<gpu::ScreenProbe>(r.probes[c]);
+    const auto index = harness.read<uint32_t>(r.adaptiveIndex[c]);
+    ASSERT_EQ(index.size(), size_t(r.adaptiveWidth) * r.adaptiveHeight);
+    const image::Image normal = harness.read(harness.renderer().gbuffer().normal);
+    const image::Image position = harness.read(harness.renderer().gbuffer().position);
+    std::vector<bool> named(r.probeCount, false);
+    uint32_t placed = 0, uncovered = 0, covered = 0;
+    for (uint32_t ty = 0; ty < r.adaptiveHeight; ++ty) {
+        for (uint32_t tx = 0; tx < r.adaptiveWidth; ++tx) {
+            float worst = 2.0f;
+            for (uint32_t i = 0; i < r.adaptiveSpacing * r.adaptiveSpacing; ++i) {
+                const glm::uvec2 px(tx * r.adaptiveSpacing + i % r.adaptiveSpacing,
+                                    ty * r.adaptiveSpacing + i / r.adaptiveSpacing);
+                if (normal.at("A", px.x, px.y) <= 0.0f) {
+                    continue;
+                }
+                const image::Rgb g = position.rgbAt(px.x, px.y), n = normal.rgbAt(px.x, px.y);
+                worst =
+                    std::min(worst, uniformCoverage(probes, r, s, px,
+                                                    glm::vec4(g.r, g.g, g.b, position.at("A", px.x, px.y)),
+                                                    glm::normalize(glm::vec3(n.r, n.g, n.b))));
+            }
+            const std::string where = "tile " + std::to_string(tx) + "," + std::to_string(ty);
+            const uint32_t slot = index[ty * r.adaptiveWidth + tx];
+            // The GPU's exp and pow may round the other way within a hair of the threshold.
+            if (std::abs(worst - LUMINA_SP_ADAPTIVE_COVERAGE) < 1e-3f) {
+                continue;
+            }
+            if (worst > LUMINA_SP_ADAPTIVE_COVERAGE) {
+                ++covered;
+                EXPECT_EQ(slot, LUMINA_SP_NO_ADAPTIVE_PROBE) << where << " is covered (" << worst << ")";
+                continue;
+            }
+            ++uncovered;
+            ASSERT_NE(slot, LUMINA_SP_NO_ADAPTIVE_PROBE) << where << " is not covered (" << worst << ")";
+            ASSERT_GE(slot, r.uniformProbeCount) << where;
+            ASSERT_LT(slot, r.probeCount) << where;
+            ASSERT_FALSE(named[slot]) << where << ": slot " << slot << " named twice";
+            named[slot] = true;
+            ++placed;
+            const gpu::ScreenProbe& p = probes[slot];
+            ASSERT_EQ(p.info.x, uint32_t(LUMINA_SP_PROBE_VALID)) << where;
+            ASSERT_EQ(p.info.y / r.adaptiveSpacing, tx) << where;
+            ASSERT_EQ(p.info.z / r.adaptiveSpacing, ty) << where;
+            const image::Rgb g = position.rgbAt(p.info.y, p.info.z), n = normal.rgbAt(p.info.y, p.info.z);
+            EXPECT_EQ(glm::vec3(p.positionAndDepth), glm::vec3(g.r, g.g, g.b)) << where;
+            const glm::vec4 at(g.r, g.g, g.b, position.at("A", p.info.y, p.info.z));
+            const float own = uniformCoverage(probes, r, s, glm::uvec2(p.info.y, p.info.z), at,
+                                              glm::normalize(glm::vec3(n.r, n.g, n.b)));
+            EXPECT_NEAR(own, worst, 1e-4f) << where << ": the probe is not at the least covered pixel";
+        }
+    }
+    for (uint32_t slot = r.uniformProbeCount; slot < r.probeCount; ++slot) {
+        EXPECT_TRUE(named[slot] || probes[slot].info.x != LUMINA_SP_PROBE_VALID) << "slot " << slot;
+    }
+    EXPECT_GT(placed, 0u);
+    EXPECT_LT(placed, r.probeCount - r.uniformProbeCount) << "the rows overflowed: tiles went without";
+    EXPECT_GT(covered, uncovered) << "most of the image is covered by the uniform grid";
 }
 
 // Every pass runs under its name, in order; probes on the sky are skipped: none of their entries
@@ -97,10 +195,13 @@ TEST_P(ProbePlacementGpuTest, EveryPassRunsTimedAndSkyProbesAreSkipped) {
     }
     const std::vector<std::string> passes = harness.render();
     const std::vector<std::string> expected = {
-        "screen probes: placement",      "screen probes: brdf pdf",        "screen probes: lighting pdf",
-        "screen probes: mis directions", "screen probes: trace far field", "screen probes: shade rays",
-        "screen probes: composite",      "screen probes: temporal",        "screen probes: spatial filter",
-        "screen probes: sh irradiance",  "screen probes: final gather",    "screen probes: screen temporal"};
+        "screen probes: placement",      "screen probes: adaptive placement",
+        "screen probes: brdf pdf",       "screen probes: lighting pdf",
+        "screen probes: mis directions", "screen probes: trace far field",
+        "screen probes: shade rays",     "screen probes: composite",
+        "screen probes: temporal",       "screen probes: spatial filter",
+        "screen probes: sh irradiance",  "screen probes: final gather",
+        "screen probes: screen temporal"};
     std::vector<std::string> ours;
     std::copy_if(passes.begin(), passes.end(), std::back_inserter(ours),
                  [](const std::string& name) { return name.rfind("screen probes: ", 0) == 0; });

@@ -60,15 +60,19 @@ TEST_P(ProbeSamplingGpuTest, LightingPdfFollowsLastFramesRadianceAboveAFloor) {
     const auto history = harness.read<gpu::float4>(r.history[0]);
     harness.render(); // same camera: every probe finds itself
     pdf = harness.read<float>(r.lightingPdf);
-    uint32_t skewed = 0;
+    const auto again = harness.read<gpu::ScreenProbe>(r.probes[1]);
+    uint32_t skewed = 0, adaptive = 0;
     for (uint32_t p = 0; p < r.probeCount; ++p) {
-        if (probes[p].info.x != LUMINA_SP_PROBE_VALID) {
+        if (again[p].info.x != LUMINA_SP_PROBE_VALID) {
             continue;
         }
+        const std::optional<uint32_t> old = sameProbeLastFrame(probes, again, p, r.uniformProbeCount);
+        ASSERT_TRUE(old.has_value()) << "probe " << p << " was not placed last frame";
+        adaptive += p >= r.uniformProbeCount;
         std::vector<float> mass(LUMINA_SP_PROBE_TEXELS, 0.0f);
         float massTotal = 0.0f, sum = 0.0f, lo = 1.0f, hi = 0.0f;
         for (uint32_t t = 0; t < LUMINA_SP_PROBE_TEXELS; ++t) {
-            const gpu::float4 h = history[p * LUMINA_SP_PROBE_TEXELS + t];
+            const gpu::float4 h = history[*old * LUMINA_SP_PROBE_TEXELS + t];
             const float l = gpu::spLightingPdfLuminance(gpu::luminance(gpu::float3(h)));
             mass[t] = h.w > 0.0f ? l * solid[t] : 0.0f;
             massTotal += mass[t];
@@ -87,6 +91,7 @@ TEST_P(ProbeSamplingGpuTest, LightingPdfFollowsLastFramesRadianceAboveAFloor) {
         skewed += hi > 4.0f * lo;
     }
     EXPECT_GT(skewed, 0u) << "probes that see both sky and black walls";
+    EXPECT_GT(adaptive, 0u) << "adaptive probes (the box's silhouette, whose cell centres see the sky)";
 }
 
 // The MIS directions on the GPU are the CPU reference's (probe_sampling_shared.h: the same
@@ -126,8 +131,10 @@ TEST_P(ProbeSamplingGpuTest, MisDirectionsAreTheTablesWarpedAndCarryTheirWeights
                 const bool fromBrdf = i < nb;
                 ASSERT_EQ(ray.info.y, fromBrdf ? uint32_t(LUMINA_SP_STRATEGY_BRDF)
                                                : uint32_t(LUMINA_SP_STRATEGY_LIGHTING));
+                const uint32_t seed = gpu::spProbeSeed(
+                    p, r.uniformProbeCount, gpu::uint2(probes[p].info.y, probes[p].info.z), r.width);
                 const glm::vec2 u =
-                    gpu::spSamplePoint(fromBrdf ? i : i - nb, fromBrdf ? nb : nl, frame, p, ray.info.y);
+                    gpu::spSamplePoint(fromBrdf ? i : i - nb, fromBrdf ? nb : nl, frame, seed, ray.info.y);
                 const gpu::SpTableSample s = gpu::spSampleTable(fromBrdf ? tb : tl, u);
                 const std::string where = "frame " + std::to_string(frame) + " probe " + std::to_string(p) +
                                           " ray " + std::to_string(i);

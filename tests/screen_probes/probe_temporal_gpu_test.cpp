@@ -202,12 +202,13 @@ TEST_P(ProbeTemporalGpuTest, ProbeHistoryIsKeptOnTheSameSurfaceAndRejectedWhereP
     struct Frame {
         std::vector<gpu::ScreenProbe> probes;
         std::vector<gpu::float4> composite, history;
+        std::vector<uint32_t> adaptiveIndex;
     };
     auto frame = [&] {
         harness.render();
         const uint32_t c = harness.probes().current();
         return Frame{harness.read<gpu::ScreenProbe>(r.probes[c]), harness.read<gpu::float4>(r.frameRadiance),
-                     harness.read<gpu::float4>(r.history[c])};
+                     harness.read<gpu::float4>(r.history[c]), harness.read<uint32_t>(r.adaptiveIndex[c])};
     };
     // kept: W' = 0.9 W + 0.1 w for every texel; rejected: W' = 0.1 w.
     auto weightsFollow = [&](const Frame& now, uint32_t p, const std::vector<gpu::float4>* old,
@@ -226,14 +227,19 @@ TEST_P(ProbeTemporalGpuTest, ProbeHistoryIsKeptOnTheSameSurfaceAndRejectedWhereP
     };
     const Frame first = frame();
     Frame second = frame();
-    uint32_t valid = 0;
+    uint32_t valid = 0, adaptive = 0;
     for (uint32_t p = 0; p < r.probeCount; ++p) {
         if (second.probes[p].info.x == LUMINA_SP_PROBE_VALID) {
             ++valid;
-            EXPECT_TRUE(weightsFollow(second, p, &first.history, p)) << "static camera, probe " << p;
+            adaptive += p >= r.uniformProbeCount;
+            const std::optional<uint32_t> old =
+                sameProbeLastFrame(first.probes, second.probes, p, r.uniformProbeCount);
+            ASSERT_TRUE(old.has_value()) << "probe " << p << " was not placed last frame";
+            EXPECT_TRUE(weightsFollow(second, p, &first.history, *old)) << "static camera, probe " << p;
         }
     }
     ASSERT_GT(valid, 0u);
+    ASSERT_GT(adaptive, 0u) << "adaptive probes on the box's silhouette";
     harness.probes().resetHistory();
     second = frame();
     for (uint32_t p = 0; p < r.probeCount; ++p) {
@@ -260,20 +266,39 @@ TEST_P(ProbeTemporalGpuTest, ProbeHistoryIsKeptOnTheSameSurfaceAndRejectedWhereP
                              glm::dot(before.viewProjRows[3], world));
         const glm::vec2 pixel =
             glm::vec2(0.5f + 0.5f * clip.x / clip.w, 0.5f - 0.5f * clip.y / clip.w) * float(kSize);
-        bool matches = false;
-        uint32_t oldIndex = 0;
-        if (clip.w > 0.0f && pixel.x >= 0.0f && pixel.y >= 0.0f && pixel.x < kSize && pixel.y < kSize) {
-            oldIndex = uint32_t(pixel.y) / 8 * r.gridWidth + uint32_t(pixel.x) / 8;
-            const gpu::ScreenProbe& old = second.probes[oldIndex];
+        // Whether the old probe in `slot` saw this probe's surface.
+        const auto sawIt = [&](uint32_t slot) {
+            const gpu::ScreenProbe& old = second.probes[slot];
             const glm::vec3 offset = glm::vec3(old.positionAndDepth) - glm::vec3(probe.positionAndDepth);
             const float depth = probe.positionAndDepth.w;
             const float cell = 8.0f * 2.0f * before.tanHalfFovY * depth / float(kSize);
-            matches =
-                old.info.x == LUMINA_SP_PROBE_VALID &&
-                std::abs(glm::dot(offset, glm::vec3(probe.normal))) <=
-                    settings.historyPlaneTolerance * depth &&
-                glm::dot(glm::vec3(old.normal), glm::vec3(probe.normal)) >= settings.historyNormalTolerance &&
-                glm::length(offset) <= LUMINA_SP_HISTORY_MAX_CELLS * cell;
+            return old.info.x == LUMINA_SP_PROBE_VALID &&
+                   std::abs(glm::dot(offset, glm::vec3(probe.normal))) <=
+                       settings.historyPlaneTolerance * depth &&
+                   glm::dot(glm::vec3(old.normal), glm::vec3(probe.normal)) >=
+                       settings.historyNormalTolerance &&
+                   glm::length(offset) <= LUMINA_SP_HISTORY_MAX_CELLS * cell;
+        };
+        bool matches = false;
+        uint32_t oldIndex = 0;
+        if (clip.w > 0.0f && pixel.x >= 0.0f && pixel.y >= 0.0f && pixel.x < kSize && pixel.y < kSize) {
+            // A uniform probe looks first in the old uniform cell there, an adaptive one first in the
+            // old adaptive tile there; each then in the other.
+            const uint32_t uniformSlot = uint32_t(pixel.y) / 8 * r.gridWidth + uint32_t(pixel.x) / 8;
+            const uint32_t tile = uint32_t(pixel.y) / r.adaptiveSpacing * r.adaptiveWidth +
+                                  uint32_t(pixel.x) / r.adaptiveSpacing;
+            const uint32_t adaptiveSlot = second.adaptiveIndex[tile];
+            std::vector<uint32_t> candidates = {uniformSlot};
+            if (adaptiveSlot != LUMINA_SP_NO_ADAPTIVE_PROBE) {
+                candidates.insert(p >= r.uniformProbeCount ? candidates.begin() : candidates.end(),
+                                  adaptiveSlot);
+            }
+            for (const uint32_t slot : candidates) {
+                if (!matches && sawIt(slot)) {
+                    matches = true;
+                    oldIndex = slot;
+                }
+            }
         }
         // Near the tolerances the GPU's rounding may decide either way: accept both there.
         const bool keptHere = weightsFollow(third, p, &second.history, oldIndex);

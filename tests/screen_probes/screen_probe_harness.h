@@ -16,6 +16,7 @@
 #include "gi/sdf/sdf_atlas.h"
 #include "gi/surface_cache/surface_cache.h"
 #include "rhi/rhi.h"
+#include "shaders/screen_probes/screen_probe_shared.h"
 
 #include <algorithm>
 #include <memory>
@@ -33,6 +34,24 @@ inline scene::Scene cornellWithSky() {
     scene::Scene scene = scene::loadScene("cornell_box_point");
     scene.camera.position -= scene.camera.forward * 900.0f;
     return scene;
+}
+
+// The slot last frame's copy of the probe in slot p held, the camera and scene unchanged: p for a
+// uniform probe; for an adaptive probe the adaptive slot placed at the same pixel (adaptive slots
+// follow thread order, their pixels do not); nullopt if there was none.
+inline std::optional<uint32_t> sameProbeLastFrame(const std::vector<gpu::ScreenProbe>& previous,
+                                                  const std::vector<gpu::ScreenProbe>& current, uint32_t p,
+                                                  uint32_t uniformProbeCount) {
+    if (p < uniformProbeCount) {
+        return p;
+    }
+    for (uint32_t q = uniformProbeCount; q < previous.size(); ++q) {
+        if (previous[q].info.x == LUMINA_SP_PROBE_VALID && previous[q].info.y == current[p].info.y &&
+            previous[q].info.z == current[p].info.z) {
+            return q;
+        }
+    }
+    return std::nullopt;
 }
 
 // The Cornell box's surface cache at one 64-texel tile per wall (8.7 mm texels); card padding
