@@ -423,6 +423,20 @@ int renderWith(const ParsedArgs& args) {
                   << " evictions (at most " << lod.maxEvictionsPerUpdate << " in a frame), "
                   << lod.pendingCaptures << " captures pending\n";
     }
+    if (lumen) {
+        const gi::ScreenProbeResources& r = renderer.lumen()->screenProbes().resources();
+        const uint32_t slots = r.probeCount - r.uniformProbeCount;
+        std::cout << "screen probes: " << r.uniformProbeCount << " uniform, ";
+        if (slots == 0) {
+            std::cout << "no adaptive (--adaptive-probes 0)\n";
+        } else {
+            // More wanted than the rows hold leaves tiles without (--adaptive-probes raises the room).
+            const uint32_t wanted = renderer.lumen()->screenProbes().adaptiveProbesWanted(*device);
+            std::cout << std::min(wanted, slots) << " adaptive in the last frame (room for " << slots << ")";
+            std::cout << (wanted > slots ? ", " + std::to_string(wanted - slots) + " tiles went without" : "")
+                      << '\n';
+        }
+    }
     if (ddgi) {
         const gi::DdgiProbeCounts probes = renderer.ddgi()->probeCounts(*device);
         std::cout << "ddgi probes: " << probes.total() << ", " << probes.inactive

@@ -10,10 +10,10 @@ void ScreenProbeAdaptivePlacementPass::record(FrameContext& frame, const ScreenP
         .constantBuffer(1, r.constants)
         .read(0, view.gbuffer.normal)
         .read(1, view.gbuffer.position)
-        .write(0, r.probes[view.current])
-        .write(1, r.adaptiveCount)
-        .write(2, r.adaptiveIndex[view.current])
-        .dispatchThreads(r.adaptiveWidth, r.adaptiveHeight, {LUMINA_SP_SCREEN_GROUP, LUMINA_SP_SCREEN_GROUP});
+        .read(2, r.probes[view.current])
+        .write(0, r.adaptiveCandidates)
+        .write(1, r.adaptiveRowWanted)
+        .dispatch(r.adaptiveHeight); // one group per row of tiles
 }
 
 } // namespace lumina::gi

@@ -1,6 +1,6 @@
 #pragma once
-// Pass 1b: adaptive probes where a pixel lies on no uniform probe's surface, one at most per adaptive
-// tile, in the slots below the grid. Kernel: shaders/screen_probes/probe_adaptive_placement.hlsl.
+// Pass 1b: per adaptive tile, the pixel that wants an adaptive probe (one on no uniform probe's
+// surface), and per tile row how many do. Kernel: shaders/screen_probes/probe_adaptive_placement.hlsl.
 #include "gi/core/frame_context.h"
 #include "gi/screen_probes/screen_probe_view.h"
 

@@ -1,6 +1,7 @@
 #include "gi/screen_probes/screen_probe_gather.h"
 
 #include "gi/core/camera.h"
+#include "rhi/transfer.h"
 #include "shaders/screen_probes/screen_probe_shared.h"
 
 #include <algorithm>
@@ -34,6 +35,11 @@ void checkVoxelLighting(const VoxelLighting& voxels) {
 ScreenProbeGather::ScreenProbeGather(rhi::IDevice& device, uint32_t width, uint32_t height,
                                      ScreenProbeSettings settings)
     : settings_(settings), resources_(ScreenProbeResources::create(device, width, height, settings)) {}
+
+uint32_t ScreenProbeGather::adaptiveProbesWanted(rhi::IDevice& device) const {
+    return resources_.adaptiveRows > 0 ? rhi::readBufferAs<uint32_t>(device, *resources_.adaptiveWanted).at(0)
+                                       : 0;
+}
 
 uint32_t ScreenProbeGather::brdfRays() const {
     return uint32_t(std::lround(float(resources_.raysPerProbe) * settings_.brdfRayFraction));
@@ -174,8 +180,10 @@ void ScreenProbeGather::record(FrameContext& frame, const ScreenProbeInputs& inp
     placement_.record(frame, view);
     if (resources_.adaptiveRows > 0) {
         adaptivePlacement_.record(frame, view);
+        adaptiveAllocation_.record(frame, view);
     } else {
         frame.skip(ScreenProbeAdaptivePlacementPass::kName, "adaptiveProbeFraction is 0");
+        frame.skip(ScreenProbeAdaptiveAllocationPass::kName, "adaptiveProbeFraction is 0");
     }
     // A strategy that draws no rays needs no table (spMisWeight leaves it out).
     if (brdfRays() > 0) {

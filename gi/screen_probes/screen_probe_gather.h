@@ -2,9 +2,9 @@
 // The screen-probe final gather (docs/screen_probes.md): the view-dependent half of the GI.
 // Records, every frame, one named and timed pass each:
 //
-//   placement -> adaptive placement -> brdf pdf -> lighting pdf -> mis directions -> trace near field
-//   -> trace far field -> shade rays -> composite -> temporal -> spatial filter -> sh irradiance
-//   -> final gather -> screen temporal
+//   placement -> adaptive placement -> adaptive allocation -> brdf pdf -> lighting pdf
+//   -> mis directions -> trace near field -> trace far field -> shade rays -> composite
+//   -> temporal -> spatial filter -> sh irradiance -> final gather -> screen temporal
 //
 //   ScreenProbeGather probes(device, width, height, settings);
 //   probes.record(frame, {.gbuffer = renderer.gbuffer(), .camera = camera, .sdf = sdfs,
@@ -28,6 +28,7 @@
 #include "gi/screen_probes/probe_trace_far_field_pass.h"
 #include "gi/screen_probes/probe_trace_near_field_pass.h"
 #include "gi/screen_probes/screen_gather_pass.h"
+#include "gi/screen_probes/screen_probe_adaptive_allocation_pass.h"
 #include "gi/screen_probes/screen_probe_adaptive_placement_pass.h"
 #include "gi/screen_probes/screen_probe_placement_pass.h"
 #include "gi/screen_probes/screen_probe_resources.h"
@@ -89,6 +90,9 @@ public:
     uint64_t framesRecorded() const { return frames_; }
     // Whether the last frame traced the near field (resources().nearField holds its result).
     bool nearFieldTraced() const { return nearFieldTraced_; }
+    // Adaptive tiles that asked for a probe in the last frame recorded (read back: call after it ran);
+    // those past the adaptive slots went without.
+    uint32_t adaptiveProbesWanted(rhi::IDevice& device) const;
     // Rays per probe drawn from the BRDF table; the rest come from the lighting table.
     uint32_t brdfRays() const;
 
@@ -117,6 +121,7 @@ private:
 
     ScreenProbePlacementPass placement_;
     ScreenProbeAdaptivePlacementPass adaptivePlacement_;
+    ScreenProbeAdaptiveAllocationPass adaptiveAllocation_;
     ProbeBrdfPdfPass brdfPdf_;
     ProbeLightingPdfPass lightingPdf_;
     ProbeRayGenerationPass rayGeneration_;

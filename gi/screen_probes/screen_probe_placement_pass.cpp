@@ -11,7 +11,6 @@ void ScreenProbePlacementPass::record(FrameContext& frame, const ScreenProbeView
         .read(0, view.gbuffer.normal)
         .read(1, view.gbuffer.position)
         .write(0, r.probes[view.current])
-        .write(1, r.adaptiveCount)
         .dispatchThreads(r.gridWidth, r.probeRows(), {LUMINA_SP_SCREEN_GROUP, LUMINA_SP_SCREEN_GROUP});
 }
 

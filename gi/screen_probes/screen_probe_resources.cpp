@@ -27,9 +27,10 @@ rhi::TextureHandle storage2d(rhi::IDevice& device, rhi::Format format, uint32_t 
 ScreenProbeResources ScreenProbeResources::create(rhi::IDevice& device, uint32_t width, uint32_t height,
                                                   const ScreenProbeSettings& settings) {
     settings.validate();
-    if (width == 0 || height == 0) {
+    if (width == 0 || height == 0 || width >= 65536 || height >= 65536) {
+        // Adaptive placement packs a pixel's coordinates into 16 bits each.
         throw std::invalid_argument("screen probes: image size " + std::to_string(width) + "x" +
-                                    std::to_string(height) + " (expected both > 0)");
+                                    std::to_string(height) + " (expected both 1 .. 65535)");
     }
     ScreenProbeResources r;
     r.width = width;
@@ -65,7 +66,11 @@ ScreenProbeResources ScreenProbeResources::create(rhi::IDevice& device, uint32_t
         r.screenPosition[i] =
             storage2d(device, rhi::Format::RGBA32_FLOAT, width, height, "screen position" + half);
     }
-    r.adaptiveCount = structured(device, 1, sizeof(uint32_t), "adaptive count");
+    const uint64_t tiles = std::max(uint64_t(r.adaptiveWidth) * r.adaptiveHeight, uint64_t(1));
+    r.adaptiveCandidates = structured(device, tiles, sizeof(uint32_t), "adaptive candidates");
+    r.adaptiveRowWanted =
+        structured(device, std::max(r.adaptiveHeight, 1u), sizeof(uint32_t), "adaptive rows");
+    r.adaptiveWanted = structured(device, 1, sizeof(uint32_t), "adaptive wanted");
     r.brdfPdf = structured(device, texels, sizeof(float), "brdf pdf");
     r.lightingPdf = structured(device, texels, sizeof(float), "lighting pdf");
     r.rays = structured(device, rays, sizeof(gpu::ProbeRay), "rays");

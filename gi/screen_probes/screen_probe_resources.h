@@ -27,9 +27,12 @@ struct ScreenProbeResources {
 
     rhi::BufferHandle constants;             // ScreenProbeConstants
     std::array<rhi::BufferHandle, 2> probes; // ScreenProbe[probeCount], this frame's and last frame's
-    rhi::BufferHandle adaptiveCount;         // uint[1]: adaptive slots taken this frame
-    // uint[adaptiveWidth x adaptiveHeight] (at least 1): each adaptive tile's probe slot or
-    // LUMINA_SP_NO_ADAPTIVE_PROBE; last frame's finds the history of adaptive probes.
+    // Adaptive placement, per adaptive tile (at least 1 entry each): the pixel that wants a probe
+    // (packAdaptivePixel) or LUMINA_SP_NO_ADAPTIVE_PROBE; per tile row, how many want one; the
+    // number wanted in the whole image (uint[1]).
+    rhi::BufferHandle adaptiveCandidates, adaptiveRowWanted, adaptiveWanted;
+    // uint per adaptive tile: its probe's slot or LUMINA_SP_NO_ADAPTIVE_PROBE; last frame's finds the
+    // history of adaptive probes.
     std::array<rhi::BufferHandle, 2> adaptiveIndex;
     rhi::BufferHandle brdfPdf;                  // float[probeCount x 64]: texel probabilities
     rhi::BufferHandle lightingPdf;              // float[probeCount x 64]

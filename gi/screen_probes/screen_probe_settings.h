@@ -16,8 +16,9 @@ struct ScreenProbeSettings {
     uint32_t probeSpacing = 8; // pixels per probe edge: one probe per spacing x spacing pixels
     // Room for adaptive probes (probe_adaptive_placement.hlsl), as a share of the uniform grid's
     // probes (0 .. 1; 0: none). They go where a pixel lies on no uniform probe's surface, at most one
-    // per (probeSpacing / 2)^2 pixels; only those placed cost rays. A quarter held every built-in
-    // scene's at 256 x 256 (docs/screen_probes.md).
+    // per (probeSpacing / 2)^2 pixels; only those placed cost rays. At 128 x 128 a quarter holds what
+    // the boxes, the rooms and the door want; the engine wants 157 and the atrium 387 for 64 slots,
+    // and the tiles past the last slot go without (`lumina render` prints it; docs/screen_probes.md).
     float adaptiveProbeFraction = 0.25f;
     uint32_t raysPerProbe = 64;   // 16 .. 256
     float brdfRayFraction = 0.5f; // share of the rays drawn from the BRDF PDF; the rest from the lighting PDF

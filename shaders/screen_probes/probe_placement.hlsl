@@ -1,22 +1,18 @@
 // lumina-kernel: cs main
 // Pass 1, placement: one probe per spacing x spacing cell, at the GBuffer surface seen by the
 // cell's centre pixel (position, view depth, normal). Cells whose centre sees the sky get an
-// invalid probe, which every later pass skips. The adaptive rows below the grid are emptied for
-// probe_adaptive_placement.hlsl, and their counter zeroed. One thread per probe slot.
+// invalid probe, which every later pass skips. The adaptive rows below the grid are emptied: only
+// the slots the adaptive allocation fills this frame hold probes. One thread per probe slot.
 #include "screen_probes/screen_probe_common.hlsli"
 
 Texture2D<float4> gNormal : register(t0);   // xyz: unit world normal; a = 1 on surfaces
 Texture2D<float4> gPosition : register(t1); // xyz: world position; w: view depth (0: background)
 RWStructuredBuffer<ScreenProbe> gProbes : register(u0);
-RWStructuredBuffer<uint> gAdaptiveCount : register(u1); // [0]: adaptive slots taken this frame
 
 [numthreads(LUMINA_SP_SCREEN_GROUP, LUMINA_SP_SCREEN_GROUP, 1)] void main(uint3 id : SV_DispatchThreadID) {
     const uint slot = id.y * gSp.probeGrid.x + id.x;
     if (id.x >= gSp.probeGrid.x || slot >= gSp.probeCount) {
         return;
-    }
-    if (slot == 0u) {
-        gAdaptiveCount[0] = 0u;
     }
     const uint spacing = gSp.probeSpacing;
     const uint2 pixel = min(id.xy * spacing + spacing / 2u, gSp.imageSize - 1u);

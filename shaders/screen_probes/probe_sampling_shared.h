@@ -68,8 +68,9 @@ LUMINA_INLINE float2 spSamplePoint(uint i, uint n, uint frame, uint probe, uint 
 }
 
 // The number that seeds a probe's directions (spSamplePoint's `probe`): a uniform probe's slot; an
-// adaptive probe's slot (from uniformCount on) depends on the order its tile's thread ran in
-// (probe_adaptive_placement.hlsl), so its pixel seeds it instead, numbered past every uniform slot.
+// adaptive probe's slot (from uniformCount on) depends on how many tiles above it wanted one
+// (probe_adaptive_allocation.hlsl), so its pixel seeds it instead, numbered past every uniform slot:
+// a probe elsewhere that appears or goes does not change its rays.
 LUMINA_INLINE uint spProbeSeed(uint slot, uint uniformCount, uint2 pixel, uint imageWidth) {
     return slot < uniformCount ? slot : uniformCount + pixel.y * imageWidth + pixel.x;
 }

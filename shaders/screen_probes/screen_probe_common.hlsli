@@ -29,6 +29,15 @@ uint2 adaptiveGrid() {
     return gSp.adaptiveSpacing > 0u ? (gSp.imageSize + s - 1u) / s : uint2(0u, 0u);
 }
 
+// A candidate pixel of the adaptive placement in one uint (images are narrower than 65,536).
+uint packAdaptivePixel(uint2 pixel) {
+    return pixel.x | (pixel.y << 16u);
+}
+
+uint2 unpackAdaptivePixel(uint packed) {
+    return uint2(packed & 0xffffu, packed >> 16u);
+}
+
 // How surely a pixel at `position` (w: view depth) with unit normal n lies on probe p's surface:
 // exp(-plane distance / (filterPlaneScale x view depth)) x max(0, n . n_p)^filterNormalPower. The gather
 // weighs probes by it; adaptive placement puts a probe where the uniform grid offers no good one.

@@ -47,8 +47,10 @@ LUMINA_GPU_NAMESPACE_BEGIN
 // Adaptive probes (probe_adaptive_placement.hlsl): a pixel whose best corner probe of the uniform grid
 // has a surface weight below this lies on no probe's surface; its adaptive tile gets a probe of its own.
 #define LUMINA_SP_ADAPTIVE_COVERAGE 0.25f
-// An adaptive tile's entry in the adaptive index when it has no probe.
+// An adaptive tile's entry in the adaptive index (and its candidate) when it has no probe.
 #define LUMINA_SP_NO_ADAPTIVE_PROBE 0xffffffffu
+// Threads of the adaptive passes' groups, one group per row of adaptive tiles.
+#define LUMINA_SP_ADAPTIVE_ROW_GROUP 64u
 
 // ScreenProbeConstants::flags
 #define LUMINA_SP_FLAG_PROBE_HISTORY 1u  // the previous frame's probes and radiance may be reused

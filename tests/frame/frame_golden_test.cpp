@@ -130,8 +130,7 @@ uint64_t nonFiniteValues(const image::Image& image) {
 
 // The uniform grid's tiles of a per-probe image (one tile per probe slot, slot (x, y) at tile (x, y),
 // probeRows rows of them), with the tiles of invalid probes zeroed. The adaptive rows are left out:
-// which slot an adaptive probe takes depends on thread order (probe_adaptive_placement.hlsl), so
-// they differ from run to run while the image they make does not.
+// the gather, temporal and frame goldens show what the adaptive probes give.
 image::Image zeroInvalidProbes(const image::Image& image, const std::vector<gpu::ScreenProbe>& probes,
                                uint32_t gridWidth, uint32_t gridHeight, uint32_t probeRows) {
     const uint32_t tileWidth = image.width() / gridWidth, tileHeight = image.height() / probeRows;

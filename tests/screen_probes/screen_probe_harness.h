@@ -37,8 +37,8 @@ inline scene::Scene cornellWithSky() {
 }
 
 // The slot last frame's copy of the probe in slot p held, the camera and scene unchanged: p for a
-// uniform probe; for an adaptive probe the adaptive slot placed at the same pixel (adaptive slots
-// follow thread order, their pixels do not); nullopt if there was none.
+// uniform probe; for an adaptive probe the adaptive slot placed at the same pixel; nullopt if there
+// was none.
 inline std::optional<uint32_t> sameProbeLastFrame(const std::vector<gpu::ScreenProbe>& previous,
                                                   const std::vector<gpu::ScreenProbe>& current, uint32_t p,
                                                   uint32_t uniformProbeCount) {

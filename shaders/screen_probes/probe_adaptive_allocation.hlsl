@@ -1,0 +1,74 @@
+// lumina-kernel: cs main
+// Pass 1c, adaptive allocation: the adaptive placement's candidates get the adaptive slots in tile
+// order (row by row, left to right), so which tile holds which slot, and which tiles go without
+// when there are more candidates than slots, is the same on every run and every GPU. A group's row
+// starts after the candidates of every row above it (gRowWanted); within the row a prefix sum over
+// each run of LUMINA_SP_ADAPTIVE_ROW_GROUP tiles numbers them. A candidate with a slot gets a probe
+// there, at its pixel's GBuffer surface; every tile's slot (or none) goes to the adaptive index. The
+// last row writes the total wanted, which `lumina render` reports. One group per row of tiles.
+#include "screen_probes/screen_probe_common.hlsli"
+
+Texture2D<float4> gNormal : register(t0);
+Texture2D<float4> gPosition : register(t1);
+StructuredBuffer<uint> gCandidates : register(t2);      // per tile: packAdaptivePixel or none
+StructuredBuffer<uint> gRowWanted : register(t3);       // per tile row: its candidates
+RWStructuredBuffer<ScreenProbe> gProbes : register(u0); // the adaptive slots (placement emptied them)
+RWStructuredBuffer<uint> gAdaptiveIndex : register(u1); // per tile: its probe's slot or none
+RWStructuredBuffer<uint> gAdaptiveWanted : register(u2); // [0]: candidates in the whole image
+
+groupshared uint gsScan[LUMINA_SP_ADAPTIVE_ROW_GROUP];
+
+// Inclusive prefix sum of `value` over the group's threads (Hillis-Steele); the group's total is
+// then in gsScan[last].
+uint inclusiveScan(uint t, uint value) {
+    GroupMemoryBarrierWithGroupSync(); // every read of the last scan is done
+    gsScan[t] = value;
+    GroupMemoryBarrierWithGroupSync();
+    for (uint offset = 1u; offset < LUMINA_SP_ADAPTIVE_ROW_GROUP; offset <<= 1u) {
+        const uint add = t >= offset ? gsScan[t - offset] : 0u;
+        GroupMemoryBarrierWithGroupSync();
+        gsScan[t] += add;
+        GroupMemoryBarrierWithGroupSync();
+    }
+    return gsScan[t];
+}
+
+[numthreads(LUMINA_SP_ADAPTIVE_ROW_GROUP, 1, 1)] void main(uint3 group : SV_GroupID, uint t : SV_GroupIndex) {
+    const uint2 tiles = adaptiveGrid();
+    const uint row = group.x;
+    if (row >= tiles.y) {
+        return;
+    }
+    uint above = 0u;
+    for (uint r = t; r < row; r += LUMINA_SP_ADAPTIVE_ROW_GROUP) {
+        above += gRowWanted[r];
+    }
+    inclusiveScan(t, above);
+    uint next = gsScan[LUMINA_SP_ADAPTIVE_ROW_GROUP - 1u]; // candidates before this run of tiles
+    const uint slots = gSp.probeCount - gSp.uniformProbeCount;
+    for (uint start = 0u; start < tiles.x; start += LUMINA_SP_ADAPTIVE_ROW_GROUP) {
+        const uint x = start + t;
+        const uint tile = row * tiles.x + x;
+        const uint candidate = x < tiles.x ? gCandidates[tile] : LUMINA_SP_NO_ADAPTIVE_PROBE;
+        const bool wants = candidate != LUMINA_SP_NO_ADAPTIVE_PROBE;
+        const uint rank = next + inclusiveScan(t, wants ? 1u : 0u) - 1u;
+        next += gsScan[LUMINA_SP_ADAPTIVE_ROW_GROUP - 1u];
+        uint slot = LUMINA_SP_NO_ADAPTIVE_PROBE;
+        if (wants && rank < slots) {
+            slot = gSp.uniformProbeCount + rank;
+            const uint2 pixel = unpackAdaptivePixel(candidate);
+            const float4 normal = gNormal.Load(int3(pixel, 0));
+            ScreenProbe probe;
+            probe.positionAndDepth = gPosition.Load(int3(pixel, 0));
+            probe.normal = float4(normalize(normal.xyz), 0.0);
+            probe.info = uint4(LUMINA_SP_PROBE_VALID, pixel, 0u);
+            gProbes[slot] = probe;
+        }
+        if (x < tiles.x) {
+            gAdaptiveIndex[tile] = slot;
+        }
+    }
+    if (row == tiles.y - 1u && t == 0u) {
+        gAdaptiveWanted[0] = next;
+    }
+}
