@@ -364,11 +364,12 @@ check_frame() {
 check_frame direct 1e-6 strict cornell_box_point --technique direct --size 64x64
 
 # The lumen frame: SDF compose and traces, surface-cache capture, lighting, voxel lighting and
-# radiosity, and the 12 screen-probe passes, 4 frames. The APIs' float rounding differs by an ULP
-# here and there (DXBC from vkd3d-shader against SPIR-V from glslang), and the screen probes'
-# importance sampling feeds each frame's radiance into the next frame's ray directions, so the
-# frames could drift apart: measured relMSE 3.5e-10 after 4 frames (docs/d3d12.md). The bound was
-# 1e-4 while the texel solid angles were miscompiled (8e-6 then); a black far field gave 0.0155.
+# radiosity, and the 14 screen-probe passes (adaptive probes included), 4 frames. The APIs' float
+# rounding differs by an ULP here and there (DXBC from vkd3d-shader against SPIR-V from glslang),
+# and the screen probes' importance sampling feeds each frame's radiance into the next frame's ray
+# directions, so the frames could drift apart: measured relMSE 3.5e-10 after 4 frames
+# (docs/d3d12.md). The bound was 1e-4 while the texel solid angles were miscompiled (8e-6 then); a
+# black far field gave 0.0155.
 check_frame lumen 1e-6 vkd3d cornell_box --technique lumen --preset low --size 32x32 --frames 4
 
 # The DDGI frame: probe tracing through the SDFs into the surface cache, the irradiance and

@@ -51,17 +51,18 @@ uint inclusiveScan(uint t, uint value) {
         const uint tile = row * tiles.x + x;
         const uint candidate = x < tiles.x ? gCandidates[tile] : LUMINA_SP_NO_ADAPTIVE_PROBE;
         const bool wants = candidate != LUMINA_SP_NO_ADAPTIVE_PROBE;
+        // The probe is made before the scan: built after it, Wine's D3D12 stored the slot as the
+        // pixel's x (docs/d3d12.md, "Compiler differences").
+        const uint2 pixel = wants ? unpackAdaptivePixel(candidate) : uint2(0u, 0u);
+        ScreenProbe probe;
+        probe.info = uint4(LUMINA_SP_PROBE_VALID, pixel, 0u);
+        probe.positionAndDepth = gPosition.Load(int3(pixel, 0));
+        probe.normal = float4(normalize(gNormal.Load(int3(pixel, 0)).xyz), 0.0);
         const uint rank = next + inclusiveScan(t, wants ? 1u : 0u) - 1u;
         next += gsScan[LUMINA_SP_ADAPTIVE_ROW_GROUP - 1u];
         uint slot = LUMINA_SP_NO_ADAPTIVE_PROBE;
         if (wants && rank < slots) {
             slot = gSp.uniformProbeCount + rank;
-            const uint2 pixel = unpackAdaptivePixel(candidate);
-            const float4 normal = gNormal.Load(int3(pixel, 0));
-            ScreenProbe probe;
-            probe.positionAndDepth = gPosition.Load(int3(pixel, 0));
-            probe.normal = float4(normalize(normal.xyz), 0.0);
-            probe.info = uint4(LUMINA_SP_PROBE_VALID, pixel, 0u);
             gProbes[slot] = probe;
         }
         if (x < tiles.x) {
