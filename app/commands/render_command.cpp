@@ -430,7 +430,8 @@ int renderWith(const ParsedArgs& args) {
         if (slots == 0) {
             std::cout << "no adaptive (--adaptive-probes 0)\n";
         } else {
-            // More wanted than the rows hold leaves tiles without (--adaptive-probes raises the room).
+            // More wanted than the rows hold: the slots are shared evenly over the image and the other
+            // tiles go without (--adaptive-probes raises the room).
             const uint32_t wanted = renderer.lumen()->screenProbes().adaptiveProbesWanted(*device);
             std::cout << std::min(wanted, slots) << " adaptive in the last frame (room for " << slots << ")";
             std::cout << (wanted > slots ? ", " + std::to_string(wanted - slots) + " tiles went without" : "")

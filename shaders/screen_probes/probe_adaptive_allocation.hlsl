@@ -3,9 +3,13 @@
 // order (row by row, left to right), so which tile holds which slot, and which tiles go without
 // when there are more candidates than slots, is the same on every run and every GPU. A group's row
 // starts after the candidates of every row above it (gRowWanted); within the row a prefix sum over
-// each run of LUMINA_SP_ADAPTIVE_ROW_GROUP tiles numbers them. A candidate with a slot gets a probe
-// there, at its pixel's GBuffer surface; every tile's slot (or none) goes to the adaptive index. The
-// last row writes the total wanted, which `lumina render` reports. One group per row of tiles.
+// each run of LUMINA_SP_ADAPTIVE_ROW_GROUP tiles numbers them. When the whole image wants more
+// probes than there are slots, the slots are shared evenly over the candidates in tile order
+// (spAdaptiveShare), so every part of the image keeps its share rather than the top rows taking
+// them all. A candidate with a slot gets a probe there, at its pixel's GBuffer surface; every
+// tile's slot (or none) goes to the adaptive index. The last row writes the total wanted, which
+// `lumina render` reports. One group per row of tiles.
+#include "screen_probes/adaptive_share_shared.h"
 #include "screen_probes/screen_probe_common.hlsli"
 
 Texture2D<float4> gNormal : register(t0);
@@ -40,9 +44,14 @@ uint inclusiveScan(uint t, uint value) {
         return;
     }
     uint above = 0u;
-    for (uint r = t; r < row; r += LUMINA_SP_ADAPTIVE_ROW_GROUP) {
-        above += gRowWanted[r];
+    uint all = 0u;
+    for (uint r = t; r < tiles.y; r += LUMINA_SP_ADAPTIVE_ROW_GROUP) {
+        const uint rowWanted = gRowWanted[r];
+        all += rowWanted;
+        above += r < row ? rowWanted : 0u;
     }
+    inclusiveScan(t, all);
+    const uint wanted = gsScan[LUMINA_SP_ADAPTIVE_ROW_GROUP - 1u];
     inclusiveScan(t, above);
     uint next = gsScan[LUMINA_SP_ADAPTIVE_ROW_GROUP - 1u]; // candidates before this run of tiles
     const uint slots = gSp.probeCount - gSp.uniformProbeCount;
@@ -60,9 +69,13 @@ uint inclusiveScan(uint t, uint value) {
         probe.normal = float4(normalize(gNormal.Load(int3(pixel, 0)).xyz), 0.0);
         const uint rank = next + inclusiveScan(t, wants ? 1u : 0u) - 1u;
         next += gsScan[LUMINA_SP_ADAPTIVE_ROW_GROUP - 1u];
+        uint2 share = uint2(0u, 0u);
+        if (wants) {
+            share = spAdaptiveShare(rank, slots, wanted);
+        }
         uint slot = LUMINA_SP_NO_ADAPTIVE_PROBE;
-        if (wants && rank < slots) {
-            slot = gSp.uniformProbeCount + rank;
+        if (share.y != 0u) {
+            slot = gSp.uniformProbeCount + share.x;
             gProbes[slot] = probe;
         }
         if (x < tiles.x) {
@@ -70,6 +83,6 @@ uint inclusiveScan(uint t, uint value) {
         }
     }
     if (row == tiles.y - 1u && t == 0u) {
-        gAdaptiveWanted[0] = next;
+        gAdaptiveWanted[0] = wanted;
     }
 }

@@ -181,6 +181,55 @@ TEST_P(ProbePlacementGpuTest, AdaptiveProbesGoWhereNoUniformProbeCoversAPixel) {
     EXPECT_GT(covered, uncovered) << "most of the image is covered by the uniform grid";
 }
 
+// With fewer adaptive slots than tiles that want one, the slots are shared evenly over the
+// candidates in tile order (spAdaptiveShare): exactly as many kept as there are slots, each at its
+// candidate's pixel, the last candidate, at the image's bottom, among them. Taken in tile order, the
+// top rows would have had every slot.
+TEST_P(ProbePlacementGpuTest, AdaptiveSlotsAreSharedEvenlyWhenMoreTilesWantOne) {
+    LUMINA_REQUIRE_KERNELS();
+    gi::ScreenProbeSettings settings;
+    settings.adaptiveProbeFraction = 0.125f; // one row of 8 slots
+    ScreenProbeHarness harness(device(), shaders(), cornellWithSky(), kSize, kSize, settings);
+    harness.render();
+    const gi::ScreenProbeResources& r = harness.probes().resources();
+    ASSERT_EQ(r.adaptiveRows, 1u);
+    const uint32_t slots = r.probeCount - r.uniformProbeCount;
+    const uint32_t c = harness.probes().current();
+    const auto probes = harness.read<gpu::ScreenProbe>(r.probes[c]);
+    const auto index = harness.read<uint32_t>(r.adaptiveIndex[c]);
+    const auto candidates = harness.read<uint32_t>(r.adaptiveCandidates);
+    std::vector<uint32_t> wanting; // tiles in tile order
+    for (uint32_t tile = 0; tile < candidates.size(); ++tile) {
+        if (candidates[tile] != LUMINA_SP_NO_ADAPTIVE_PROBE) {
+            wanting.push_back(tile);
+        } else {
+            EXPECT_EQ(index[tile], LUMINA_SP_NO_ADAPTIVE_PROBE) << "tile " << tile << " wants none";
+        }
+    }
+    const auto wanted = uint32_t(wanting.size());
+    ASSERT_GT(wanted, slots) << "the slots must overflow for this test";
+    EXPECT_EQ(harness.probes().adaptiveProbesWanted(device()), wanted);
+    uint32_t kept = 0;
+    for (uint32_t rank = 0; rank < wanted; ++rank) {
+        const uint32_t tile = wanting[rank];
+        const std::string where = "tile " + std::to_string(tile) + ", rank " + std::to_string(rank);
+        const uint64_t share = uint64_t(rank) * slots / wanted;
+        if (uint64_t(rank + 1) * slots / wanted == share) {
+            EXPECT_EQ(index[tile], LUMINA_SP_NO_ADAPTIVE_PROBE) << where << " goes without";
+            continue;
+        }
+        ++kept;
+        ASSERT_EQ(index[tile], r.uniformProbeCount + share) << where;
+        const gpu::ScreenProbe& p = probes[index[tile]];
+        EXPECT_EQ(p.info.x, uint32_t(LUMINA_SP_PROBE_VALID)) << where;
+        EXPECT_EQ(p.info.y, candidates[tile] & 0xffffu) << where;
+        EXPECT_EQ(p.info.z, candidates[tile] >> 16u) << where;
+    }
+    EXPECT_EQ(kept, slots);
+    EXPECT_NE(index[wanting.back()], LUMINA_SP_NO_ADAPTIVE_PROBE)
+        << "the bottom of the image keeps its share";
+}
+
 // Every pass runs under its name, in order; probes on the sky are skipped: none of their entries
 // in any per-probe buffer is touched (each was filled with a NaN pattern first), while every entry
 // of a valid probe is written and finite. Sky pixels gather nothing.
