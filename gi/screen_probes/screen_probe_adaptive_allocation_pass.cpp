@@ -11,7 +11,7 @@ void ScreenProbeAdaptiveAllocationPass::record(FrameContext& frame, const Screen
         .read(0, view.gbuffer.normal)
         .read(1, view.gbuffer.position)
         .read(2, r.adaptiveCandidates)
-        .read(3, r.adaptiveRowWanted)
+        .read(3, r.adaptiveRunWanted)
         .write(0, r.probes[view.current])
         .write(1, r.adaptiveIndex[view.current])
         .write(2, r.adaptiveWanted)

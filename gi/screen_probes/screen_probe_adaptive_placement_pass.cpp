@@ -12,8 +12,8 @@ void ScreenProbeAdaptivePlacementPass::record(FrameContext& frame, const ScreenP
         .read(1, view.gbuffer.position)
         .read(2, r.probes[view.current])
         .write(0, r.adaptiveCandidates)
-        .write(1, r.adaptiveRowWanted)
-        .dispatch(r.adaptiveHeight); // one group per row of tiles
+        .write(1, r.adaptiveRunWanted)
+        .dispatch(r.adaptiveRunsPerRow, r.adaptiveHeight); // a group per run of a row's tiles
 }
 
 } // namespace lumina::gi

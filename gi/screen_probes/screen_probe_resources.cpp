@@ -43,6 +43,7 @@ ScreenProbeResources ScreenProbeResources::create(rhi::IDevice& device, uint32_t
         r.adaptiveSpacing = std::max(settings.probeSpacing / 2, 1u);
         r.adaptiveWidth = (width + r.adaptiveSpacing - 1) / r.adaptiveSpacing;
         r.adaptiveHeight = (height + r.adaptiveSpacing - 1) / r.adaptiveSpacing;
+        r.adaptiveRunsPerRow = (r.adaptiveWidth + LUMINA_SP_ADAPTIVE_RUN - 1) / LUMINA_SP_ADAPTIVE_RUN;
     }
     r.probeCount = r.gridWidth * r.probeRows();
     r.raysPerProbe = settings.raysPerProbe;
@@ -68,8 +69,9 @@ ScreenProbeResources ScreenProbeResources::create(rhi::IDevice& device, uint32_t
     }
     const uint64_t tiles = std::max(uint64_t(r.adaptiveWidth) * r.adaptiveHeight, uint64_t(1));
     r.adaptiveCandidates = structured(device, tiles, sizeof(uint32_t), "adaptive candidates");
-    r.adaptiveRowWanted =
-        structured(device, std::max(r.adaptiveHeight, 1u), sizeof(uint32_t), "adaptive rows");
+    r.adaptiveRunWanted =
+        structured(device, std::max(uint64_t(r.adaptiveRunsPerRow) * r.adaptiveHeight, uint64_t(1)),
+                   sizeof(uint32_t), "adaptive runs");
     r.adaptiveWanted = structured(device, 1, sizeof(uint32_t), "adaptive wanted");
     r.brdfPdf = structured(device, texels, sizeof(float), "brdf pdf");
     r.lightingPdf = structured(device, texels, sizeof(float), "lighting pdf");

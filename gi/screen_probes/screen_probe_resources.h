@@ -21,16 +21,17 @@ struct ScreenProbeResources {
     uint32_t probeCount = 0;
     // Adaptive tiles: adaptiveSpacing (probeSpacing / 2) pixels a side, adaptiveWidth x adaptiveHeight
     // of them; all 0 when adaptive probes are off.
-    uint32_t adaptiveSpacing = 0, adaptiveWidth = 0, adaptiveHeight = 0;
+    uint32_t adaptiveSpacing = 0, adaptiveWidth = 0, adaptiveHeight = 0, adaptiveRunsPerRow = 0;
     uint32_t probeRows() const { return gridHeight + adaptiveRows; }
     uint32_t raysPerProbe = 0;
 
     rhi::BufferHandle constants;             // ScreenProbeConstants
     std::array<rhi::BufferHandle, 2> probes; // ScreenProbe[probeCount], this frame's and last frame's
     // Adaptive placement, per adaptive tile (at least 1 entry each): the pixel that wants a probe
-    // (packAdaptivePixel) or LUMINA_SP_NO_ADAPTIVE_PROBE; per tile row, how many want one; the
-    // number wanted in the whole image (uint[1]).
-    rhi::BufferHandle adaptiveCandidates, adaptiveRowWanted, adaptiveWanted;
+    // (packAdaptivePixel) or LUMINA_SP_NO_ADAPTIVE_PROBE; per run of LUMINA_SP_ADAPTIVE_RUN tiles of
+    // a row (adaptiveRunsPerRow a row), how many want one; the number wanted in the whole image
+    // (uint[1]).
+    rhi::BufferHandle adaptiveCandidates, adaptiveRunWanted, adaptiveWanted;
     // uint per adaptive tile: its probe's slot or LUMINA_SP_NO_ADAPTIVE_PROBE; last frame's finds the
     // history of adaptive probes.
     std::array<rhi::BufferHandle, 2> adaptiveIndex;

@@ -6,18 +6,19 @@
 // on a surface no cell centre saw: a strip of wall between a doorway's jamb and an open door, a thin
 // object, a silhouette whose cell centres see the sky. Without them the gather reads probes on other
 // surfaces there (the door's 6 cm strip was 90 % of lumen's error at 256 x 256; docs/gi.md, energy
-// 45.). Writes each tile's candidate pixel and each tile row's count of them; the allocation pass
-// then gives the candidates slots in tile order. One group per row of tiles, its threads taking
-// every LUMINA_SP_ADAPTIVE_ROW_GROUP-th tile of the row.
+// 45.). Writes each tile's candidate pixel and each run of LUMINA_SP_ADAPTIVE_RUN tiles' count of
+// them; the allocation pass then gives the candidates slots in tile order. A thread per tile, a
+// group per run: one group per row took 2.6 times as long on the H200, a few hundred groups
+// being too few to fill it.
 #include "screen_probes/screen_probe_common.hlsli"
 
 Texture2D<float4> gNormal : register(t0);
 Texture2D<float4> gPosition : register(t1);
 StructuredBuffer<ScreenProbe> gProbes : register(t2);    // this frame's uniform grid
 RWStructuredBuffer<uint> gCandidates : register(u0);     // per tile: packAdaptivePixel or none
-RWStructuredBuffer<uint> gRowWanted : register(u1);      // per tile row: its tiles that want a probe
+RWStructuredBuffer<uint> gRunWanted : register(u1);      // per run of tiles: those that want a probe
 
-groupshared uint gsWanted[LUMINA_SP_ADAPTIVE_ROW_GROUP];
+groupshared uint gsWanted[LUMINA_SP_ADAPTIVE_RUN];
 
 // The best surface weight among the valid uniform probes at the corners of the pixel's cell (0: none
 // valid).
@@ -57,25 +58,22 @@ uint tileCandidate(uint2 tile) {
     return candidate;
 }
 
-[numthreads(LUMINA_SP_ADAPTIVE_ROW_GROUP, 1, 1)] void main(uint3 group : SV_GroupID, uint t : SV_GroupIndex) {
+[numthreads(LUMINA_SP_ADAPTIVE_RUN, 1, 1)] void main(uint3 group : SV_GroupID, uint t : SV_GroupIndex) {
     const uint2 tiles = adaptiveGrid();
-    const uint row = group.x;
-    if (row >= tiles.y) {
-        return;
-    }
-    uint wanted = 0u;
-    for (uint x = t; x < tiles.x; x += LUMINA_SP_ADAPTIVE_ROW_GROUP) {
-        const uint candidate = tileCandidate(uint2(x, row));
+    const uint run = group.x, row = group.y;
+    const uint x = run * LUMINA_SP_ADAPTIVE_RUN + t;
+    uint candidate = LUMINA_SP_NO_ADAPTIVE_PROBE;
+    if (x < tiles.x && row < tiles.y) {
+        candidate = tileCandidate(uint2(x, row));
         gCandidates[row * tiles.x + x] = candidate;
-        wanted += candidate != LUMINA_SP_NO_ADAPTIVE_PROBE ? 1u : 0u;
     }
-    gsWanted[t] = wanted;
+    gsWanted[t] = candidate != LUMINA_SP_NO_ADAPTIVE_PROBE ? 1u : 0u;
     GroupMemoryBarrierWithGroupSync();
-    if (t == 0u) {
+    if (t == 0u && row < tiles.y) {
         uint sum = 0u;
-        for (uint i = 0u; i < LUMINA_SP_ADAPTIVE_ROW_GROUP; ++i) {
+        for (uint i = 0u; i < LUMINA_SP_ADAPTIVE_RUN; ++i) {
             sum += gsWanted[i];
         }
-        gRowWanted[row] = sum;
+        gRunWanted[row * adaptiveRunsPerRow(tiles) + run] = sum;
     }
 }

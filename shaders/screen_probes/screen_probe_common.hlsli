@@ -29,6 +29,11 @@ uint2 adaptiveGrid() {
     return gSp.adaptiveSpacing > 0u ? (gSp.imageSize + s - 1u) / s : uint2(0u, 0u);
 }
 
+// Runs of LUMINA_SP_ADAPTIVE_RUN tiles in a row of `tiles` (adaptiveGrid()).
+uint adaptiveRunsPerRow(uint2 tiles) {
+    return (tiles.x + LUMINA_SP_ADAPTIVE_RUN - 1u) / LUMINA_SP_ADAPTIVE_RUN;
+}
+
 // A candidate pixel of the adaptive placement in one uint (images are narrower than 65,536).
 uint packAdaptivePixel(uint2 pixel) {
     return pixel.x | (pixel.y << 16u);

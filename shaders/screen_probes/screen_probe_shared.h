@@ -49,8 +49,9 @@ LUMINA_GPU_NAMESPACE_BEGIN
 #define LUMINA_SP_ADAPTIVE_COVERAGE 0.25f
 // An adaptive tile's entry in the adaptive index (and its candidate) when it has no probe.
 #define LUMINA_SP_NO_ADAPTIVE_PROBE 0xffffffffu
-// Threads of the adaptive passes' groups, one group per row of adaptive tiles.
-#define LUMINA_SP_ADAPTIVE_ROW_GROUP 64u
+// A run of adaptive tiles: this many of one row. Placement takes a run per group, a thread per tile,
+// and counts the run's candidates; allocation takes a row per group and numbers it a run at a time.
+#define LUMINA_SP_ADAPTIVE_RUN 64u
 
 // ScreenProbeConstants::flags
 #define LUMINA_SP_FLAG_PROBE_HISTORY 1u  // the previous frame's probes and radiance may be reused
