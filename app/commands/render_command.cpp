@@ -87,6 +87,18 @@ gi::FrameRendererSettings rendererSettings(const ParsedArgs& args, const scene::
     if (settings.technique == gi::GiTechnique::ShGrid) {
         settings.shGrid = shGridSettings(args, *shadows, scene);
     }
+    if (args.has("mesh-sdf-resolution")) {
+        const auto voxels = static_cast<uint32_t>(
+            args.getUint("mesh-sdf-resolution", 0, gi::kMinMeshSdfResolution, gi::kMaxMeshSdfResolution));
+        if (settings.lumen) {
+            gi::setMeshSdfResolution(*settings.lumen, voxels, scene);
+        } else if (settings.ddgi) {
+            gi::setMeshSdfResolution(*settings.ddgi, voxels, scene);
+        } else {
+            throw UsageError(
+                "--mesh-sdf-resolution applies only to the techniques that trace SDFs (lumen, ddgi)");
+        }
+    }
     settings.deferred = {.width = scene.image.width,
                          .height = scene.image.height,
                          .sunShadowSize = shadows->sunShadowSize,
@@ -567,6 +579,9 @@ Command renderCommand() {
               "screen-probe near-field trace length in scene units; beyond it the far field (0: far field "
               "only; default: the preset's, 15 % of the scene's largest extent at low, the whole trace at "
               "medium and high)"},
+             {"mesh-sdf-resolution", "N",
+              "lumen and ddgi: voxels along each mesh's longest axis in its SDF (8..512; default 64): finer "
+              "resolves thinner walls and gaps; memory and build time grow as N^3"},
              {"exr", "PATH", "also write the linear HDR result as EXR"},
              {"dump-buffers", "DIR", "write every intermediate buffer into DIR"},
              {"check-finite", "",

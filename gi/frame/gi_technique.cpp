@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 
 namespace lumina::gi {
 
@@ -65,19 +66,28 @@ float giSceneExtent(const scene::Scene& scene) {
     return largest;
 }
 
+void setMeshSdfResolution(GiSceneSettings& settings, uint32_t voxels, const scene::Scene& scene) {
+    if (voxels < kMinMeshSdfResolution || voxels > kMaxMeshSdfResolution) {
+        throw std::invalid_argument("mesh SDF resolution " + std::to_string(voxels) + " is outside [" +
+                                    std::to_string(kMinMeshSdfResolution) + ", " +
+                                    std::to_string(kMaxMeshSdfResolution) + "]");
+    }
+    settings.sdf.mesh.resolution = voxels;
+    // SDF hits lie up to about half a mesh-SDF voxel off the surface; a mesh spans at most the
+    // scene, so one scene-wide mesh voxel of padding lets every hit find its card.
+    settings.cache.minPaddingUnits = giSceneExtent(scene) / float(voxels);
+}
+
 GiSceneSettings giScenePreset(const Preset& knobs, const scene::Scene& scene) {
     const float largest = giSceneExtent(scene);
     GiSceneSettings s;
-    s.sdf.mesh.resolution = 64;
     s.sdf.globalResolution = 64;
 
     s.cache.atlasSize = knobs.atlasSize;
     const double metresPerUnit = scene.units.metresPerUnit > 0.0 ? scene.units.metresPerUnit : 1.0;
     const float detailExtent = std::min(largest, float(kCardDetailExtentMetres / metresPerUnit));
     s.cache.texelsPerUnit = knobs.cardTexelsAcross / detailExtent;
-    // SDF hits lie up to about half a mesh-SDF voxel off the surface; a mesh spans at most the
-    // scene, so one scene-wide mesh voxel of padding lets every hit find its card.
-    s.cache.minPaddingUnits = largest / float(s.sdf.mesh.resolution);
+    setMeshSdfResolution(s, 64, scene);
     s.lighting.schedule.tilesPerUpdate =
         std::max(1u, knobs.radiosityTexelsPerFrame / (surface_cache::kTileSize * surface_cache::kTileSize));
     s.lighting.schedule.tolerance = knobs.radiosityTolerance;

@@ -55,6 +55,11 @@ float giSceneExtent(const scene::Scene& scene);
 // traces them. std::invalid_argument for a scene with no extent.
 GiSceneSettings giScenePreset(const Preset& preset, const scene::Scene& scene);
 
+// Mesh SDFs of `voxels` along each mesh's longest axis (the presets' 64; `lumina render
+// --mesh-sdf-resolution`), with the card padding that resolution's hits need.
+inline constexpr uint32_t kMinMeshSdfResolution = 8, kMaxMeshSdfResolution = 512;
+void setMeshSdfResolution(GiSceneSettings& settings, uint32_t voxels, const scene::Scene& scene);
+
 // A preset for `scene`: lengths scale with the scene's extent (the Cornell box is in
 // millimetres, the city in metres), so card texels, card padding and distances follow the
 // scene. std::invalid_argument naming the preset and the choices for an unknown name.

@@ -211,8 +211,8 @@ SceneFile parseSceneFileText(std::string_view text, const std::filesystem::path&
         throw SceneError(file, std::string("malformed JSON: ") + error.what());
     }
     const JsonObject root(document, "", file,
-                          {"description", "gltf", "generator", "instances", "metresPerUnit", "camera",
-                           "lights", "replaceLights", "sun", "sky", "image", "technique", "preset",
+                          {"description", "gltf", "generator", "instances", "doorGap", "metresPerUnit",
+                           "camera", "lights", "replaceLights", "sun", "sky", "image", "technique", "preset",
                            "framesPerSecond", "animation", "ddgiVolumes"});
     SceneFile out;
     out.file = file;
@@ -237,6 +237,17 @@ SceneFile parseSceneFileText(std::string_view text, const std::filesystem::path&
     out.instances = root.unsignedInt("instances", 1, kCityMaxBuildings);
     if (out.instances && out.generator != "city") {
         root.fail("instances", "applies only to \"generator\": \"city\"");
+    }
+    if (const auto gap = root.number("doorGap")) {
+        if (out.generator != "door") {
+            root.fail("doorGap", "applies only to \"generator\": \"door\"");
+        }
+        if (!(*gap >= kDoorMinGap && *gap <= kDoorMaxGap)) {
+            std::ostringstream range;
+            range << "must be within [" << kDoorMinGap << ", " << kDoorMaxGap << "] metres";
+            root.fail("doorGap", range.str());
+        }
+        out.doorGap = float(*gap);
     }
     if (const auto metres = root.number("metresPerUnit")) {
         if (!(*metres > 0.0)) {

@@ -29,6 +29,7 @@ struct SceneFile {
     std::filesystem::path gltf;        // resolved against the scene file's folder; empty with a generator
     std::string generator;             // "atrium", "city" or "door"
     std::optional<uint32_t> instances; // city only
+    std::optional<float> doorGap;      // door only: metres between the shut door and the wall
     std::optional<double> metresPerUnit;
     std::optional<SceneFileCamera> camera;
     std::vector<Light> lights; // intensities in file units (candela for point and spot)

@@ -30,7 +30,7 @@ Scene generate(const SceneFile& sceneFile, const LoadOptions& options) {
         return makeAtrium();
     }
     if (sceneFile.generator == "door") {
-        return makeDoor();
+        return makeDoor(sceneFile.doorGap.value_or(kDoorDefaultGap));
     }
     const uint32_t buildings =
         options.instances.value_or(sceneFile.instances.value_or(kCityDefaultBuildings));

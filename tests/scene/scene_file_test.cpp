@@ -1,9 +1,11 @@
 // Scene files: overrides apply, units convert, and every mistake names the key and the file.
+#include "gi/scene/generators/generators.h"
 #include "gi/scene/scene_error.h"
 #include "gi/scene/scene_file.h"
 #include "gi/scene/scene_loader.h"
 #include "tests/scene/test_files.h"
 
+#include <algorithm>
 #include <gtest/gtest.h>
 
 namespace lumina::scene {
@@ -135,6 +137,10 @@ TEST(SceneFile, MistakesAreErrorsNamingTheKey) {
         {R"({"generator": "atrium", "instances": 5})", "'instances' applies only"},
         {R"({"generator": "city", "instances": -5})", "'instances' must be a whole number"},
         {R"({"generator": "city", "instances": 0})", "'instances' must be a whole number"},
+        {R"({"generator": "city", "doorGap": 0.02})", "'doorGap' applies only"},
+        {R"({"generator": "door", "doorGap": 0})", "'doorGap' must be within [0.001, 0.5]"},
+        {R"({"generator": "door", "doorGap": 2})", "'doorGap' must be within"},
+        {R"({"generator": "door", "doorGap": "wide"})", "'doorGap' must be a finite number"},
         {R"({"generator": "atrium", "metresPerUnit": 0})", "'metresPerUnit' must be positive"},
         {R"({"generator": "atrium", "camera": {"fovYDegrees": "wide"}})",
          "'camera.fovYDegrees' must be a finite"},
@@ -231,6 +237,26 @@ TEST(SceneFile, DdgiVolumesArePlacedAndBadOnesNamed) {
         EXPECT_NE(errorOf([&] { loadScene(file.string()); }, file).find("ddgiVolumes[0]"), std::string::npos)
             << bad;
     }
+}
+
+TEST(SceneFile, DoorGapMovesTheDoorOffTheWall) {
+    const TempDir dir;
+    const auto doorMinX = [&](const std::string& json) {
+        const Scene scene = loadScene(dir.write("door.json", json).string());
+        float x = 1e9f;
+        for (const Instance& instance : scene.instances) {
+            if (instance.name == "door") {
+                for (const glm::vec3& p : scene.meshes[instance.mesh].positions) {
+                    x = std::min(x, glm::vec3(instance.transform * glm::vec4(p, 1.0f)).x);
+                }
+            }
+        }
+        return x;
+    };
+    const float shipped = doorMinX(R"({"generator": "door"})");
+    EXPECT_NEAR(doorMinX(R"({"generator": "door", "doorGap": 0.01})"), shipped, 1e-6f);
+    EXPECT_NEAR(doorMinX(R"({"generator": "door", "doorGap": 0.05})") - shipped, 0.04f, 1e-5f);
+    EXPECT_NEAR(doorHinge(0.05f).x - doorHinge().x, 0.04f, 1e-6f);
 }
 
 } // namespace

@@ -13,9 +13,9 @@ namespace lumina::scene {
 
 namespace {
 
-// The door: 4 cm thick, 1 cm off the east face of the wall, overlapping the doorway by 6 cm at
-// the sides and 5 cm at the top so that no straight ray slips past it when closed.
-constexpr float kDoorGap = 0.01f, kDoorThickness = 0.04f, kDoorOverlap = 0.06f, kDoorHeight = 2.15f;
+// The door: 4 cm thick, `gap` (1 cm by default) off the east face of the wall, overlapping the
+// doorway by 6 cm at the sides and 5 cm at the top so that no straight ray slips past it when closed.
+constexpr float kDoorThickness = 0.04f, kDoorOverlap = 0.06f, kDoorHeight = 2.15f;
 // The lamp (point light), in candela = scene intensity in metres (units.h): about 3.7 lux on
 // the floor below it.
 constexpr float kLampCandela = 25.0f;
@@ -25,21 +25,21 @@ using namespace two_room;
 constexpr uint32_t kWood = kFirstOwnMaterial;
 constexpr uint32_t kSkipBottom = 1u << 2;
 
-Mesh doorMesh() {
+Mesh doorMesh(float gap) {
     MeshBuilder door("door");
     door.material(kWood);
-    const float x0 = kHalfWall + kDoorGap, halfWidth = kDoorwayHalfWidth + kDoorOverlap;
+    const float x0 = kHalfWall + gap, halfWidth = kDoorwayHalfWidth + kDoorOverlap;
     door.box({x0, 0.0f, -halfWidth}, {x0 + kDoorThickness, kDoorHeight, halfWidth}, false, kSkipBottom);
     return door.finish();
 }
 
 } // namespace
 
-glm::vec3 doorHinge() {
-    return {kHalfWall + kDoorGap + kDoorThickness, 0.0f, -(kDoorwayHalfWidth + kDoorOverlap)};
+glm::vec3 doorHinge(float gap) {
+    return {kHalfWall + gap + kDoorThickness, 0.0f, -(kDoorwayHalfWidth + kDoorOverlap)};
 }
 
-Scene makeDoor() {
+Scene makeDoor(float gap) {
     Scene scene;
     scene.name = "door";
     scene.description = "a lit room and a dark one joined by a doorway; the door swings open and shut";
@@ -49,7 +49,7 @@ Scene makeDoor() {
         {.name = "ochre", .baseColor = {0.8f, 0.5f, 0.15f, 1.0f}},
         {.name = "wood", .baseColor = {0.5f, 0.32f, 0.18f, 1.0f}},
     };
-    scene.meshes = {shellMesh(), dividingWallMesh(), doorMesh()};
+    scene.meshes = {shellMesh(), dividingWallMesh(), doorMesh(gap)};
     for (uint32_t i = 0; i < scene.meshes.size(); ++i) {
         scene.instances.push_back({.mesh = i, .transform = glm::mat4(1.0f), .name = scene.meshes[i].name});
     }

@@ -24,10 +24,12 @@ Scene makeFurnace(float albedo);
 Scene makeAtrium();
 
 // Two rooms joined by a doorway, one lit by a lamp, the other (with the camera) dark, and a
-// door that scenes/door/door.json swings about doorHinge() (metres).
-Scene makeDoor();
-// A point on the door's hinge axis (vertical, through this point).
-glm::vec3 doorHinge();
+// door that scenes/door/door.json swings about doorHinge() (metres). `gap`: between the shut door
+// and the wall (scene-file key `doorGap`), within [kDoorMinGap, kDoorMaxGap].
+inline constexpr float kDoorDefaultGap = 0.01f, kDoorMinGap = 0.001f, kDoorMaxGap = 0.5f;
+Scene makeDoor(float gap = kDoorDefaultGap);
+// A point on the axis of the hinge of the door `gap` off the wall (vertical, through this point).
+glm::vec3 doorHinge(float gap = kDoorDefaultGap);
 
 // Two rooms joined by a doorway, only the west one lit, the camera in the east one (metres):
 // by an emissive panel in the west room's ceiling (two_rooms), or by the sun and sky through an
