@@ -50,6 +50,31 @@ constexpr uint32_t kMaxConvergeFrames = 2000;
 // More than three frames ahead only adds latency: the GPU is busy either way.
 constexpr uint32_t kMaxFramesInFlight = 3;
 
+// --mesh-sdf-resolution and --global-sdf-resolution, for the techniques that trace SDFs.
+void applySdfResolutionFlags(const ParsedArgs& args, const scene::Scene& scene,
+                             gi::FrameRendererSettings& settings) {
+    gi::GiSceneSettings* traced = settings.lumen  ? static_cast<gi::GiSceneSettings*>(&*settings.lumen)
+                                  : settings.ddgi ? static_cast<gi::GiSceneSettings*>(&*settings.ddgi)
+                                                  : nullptr;
+    for (const char* flag : {"mesh-sdf-resolution", "global-sdf-resolution"}) {
+        if (args.has(flag) && traced == nullptr) {
+            throw UsageError(std::string("--") + flag +
+                             " applies only to the techniques that trace SDFs (lumen, ddgi)");
+        }
+    }
+    if (args.has("mesh-sdf-resolution")) {
+        gi::setMeshSdfResolution(
+            *traced,
+            static_cast<uint32_t>(
+                args.getUint("mesh-sdf-resolution", 0, gi::kMinMeshSdfResolution, gi::kMaxMeshSdfResolution)),
+            scene);
+    }
+    if (args.has("global-sdf-resolution")) {
+        traced->sdf.globalResolution = static_cast<uint32_t>(args.getUint(
+            "global-sdf-resolution", 0, gi::kMinGlobalSdfResolution, gi::kMaxGlobalSdfResolution));
+    }
+}
+
 gi::FrameRendererSettings rendererSettings(const ParsedArgs& args, const scene::Scene& scene,
                                            float exposure) {
     gi::FrameRendererSettings settings;
@@ -87,18 +112,7 @@ gi::FrameRendererSettings rendererSettings(const ParsedArgs& args, const scene::
     if (settings.technique == gi::GiTechnique::ShGrid) {
         settings.shGrid = shGridSettings(args, *shadows, scene);
     }
-    if (args.has("mesh-sdf-resolution")) {
-        const auto voxels = static_cast<uint32_t>(
-            args.getUint("mesh-sdf-resolution", 0, gi::kMinMeshSdfResolution, gi::kMaxMeshSdfResolution));
-        if (settings.lumen) {
-            gi::setMeshSdfResolution(*settings.lumen, voxels, scene);
-        } else if (settings.ddgi) {
-            gi::setMeshSdfResolution(*settings.ddgi, voxels, scene);
-        } else {
-            throw UsageError(
-                "--mesh-sdf-resolution applies only to the techniques that trace SDFs (lumen, ddgi)");
-        }
-    }
+    applySdfResolutionFlags(args, scene, settings);
     settings.deferred = {.width = scene.image.width,
                          .height = scene.image.height,
                          .sunShadowSize = shadows->sunShadowSize,
@@ -582,6 +596,10 @@ Command renderCommand() {
              {"mesh-sdf-resolution", "N",
               "lumen and ddgi: voxels along each mesh's longest axis in its SDF (8..512; default 64): finer "
               "resolves thinner walls and gaps; memory and build time grow as N^3"},
+             {"global-sdf-resolution", "N",
+              "lumen and ddgi: voxels along the scene's longest axis in the global SDF, or per side of each "
+              "cascade where the scene has cascades (16..256; default 64): finer lets the surface cache's "
+              "rays through narrower openings; memory grows as N^3"},
              {"exr", "PATH", "also write the linear HDR result as EXR"},
              {"dump-buffers", "DIR", "write every intermediate buffer into DIR"},
              {"check-finite", "",

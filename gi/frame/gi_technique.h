@@ -58,6 +58,9 @@ GiSceneSettings giScenePreset(const Preset& preset, const scene::Scene& scene);
 // Mesh SDFs of `voxels` along each mesh's longest axis (the presets' 64; `lumina render
 // --mesh-sdf-resolution`), with the card padding that resolution's hits need.
 inline constexpr uint32_t kMinMeshSdfResolution = 8, kMaxMeshSdfResolution = 512;
+// The global SDF's voxels along the scene, or per side of each cascade where the scene has them
+// (the presets' 64; `lumina render --global-sdf-resolution`).
+inline constexpr uint32_t kMinGlobalSdfResolution = 16, kMaxGlobalSdfResolution = 256;
 void setMeshSdfResolution(GiSceneSettings& settings, uint32_t voxels, const scene::Scene& scene);
 
 // A preset for `scene`: lengths scale with the scene's extent (the Cornell box is in
