@@ -29,3 +29,14 @@ expect_match(bad-async-mode "${ERR}" "--async-compute: 'maybe' is not auto, on o
 run(0 async-on render cornell_box_point --technique ddgi --preset low --size 16x16 --frames 3 --validation
     --async-compute on --out "${DIR}/async.png")
 expect_match(async-on "${OUT}" "async compute: 2 of 3 frame\\(s\\) ran GI passes on the compute queue")
+
+# --mesh-sdf-resolution and --global-sdf-resolution (docs/gi.md, energy 48.): out of range, or
+# given to a technique that traces no SDF, is a usage error; in range, the SDFs are built at it.
+run(2 mesh-sdf-range render cornell_box_point --size 16x16 --frames 1 --mesh-sdf-resolution 1000)
+expect_match(mesh-sdf-range "${ERR}" "--mesh-sdf-resolution: 1000 is out of range \\[8, 512\\]")
+run(2 global-sdf-direct render cornell_box_point --technique direct --size 16x16 --frames 1
+    --global-sdf-resolution 32)
+expect_match(global-sdf-direct "${ERR}" "--global-sdf-resolution applies only to the techniques that trace SDFs")
+run(0 sdf-resolutions render cornell_box_point --preset low --size 16x16 --frames 2 --validation
+    --mesh-sdf-resolution 24 --global-sdf-resolution 32 --out "${DIR}/sdf.png")
+expect_match(sdf-resolutions "${OUT}" "SDFs 0\\.5 MiB") # 3.7 MiB at the presets' 64 and 64
