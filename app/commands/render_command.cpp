@@ -70,8 +70,9 @@ void applySdfResolutionFlags(const ParsedArgs& args, const scene::Scene& scene,
             scene);
     }
     if (args.has("global-sdf-resolution")) {
-        traced->sdf.globalResolution = static_cast<uint32_t>(args.getUint(
-            "global-sdf-resolution", 0, gi::kMinGlobalSdfResolution, gi::kMaxGlobalSdfResolution));
+        gi::setGlobalSdfResolution(*traced, static_cast<uint32_t>(args.getUint("global-sdf-resolution", 0,
+                                                                               gi::kMinGlobalSdfResolution,
+                                                                               gi::kMaxGlobalSdfResolution)));
     }
 }
 

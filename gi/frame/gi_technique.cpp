@@ -78,10 +78,20 @@ void setMeshSdfResolution(GiSceneSettings& settings, uint32_t voxels, const scen
     settings.cache.minPaddingUnits = giSceneExtent(scene) / float(voxels);
 }
 
+void setGlobalSdfResolution(GiSceneSettings& settings, uint32_t voxels) {
+    if (voxels < kMinGlobalSdfResolution || voxels > kMaxGlobalSdfResolution) {
+        throw std::invalid_argument("global SDF resolution " + std::to_string(voxels) + " is outside [" +
+                                    std::to_string(kMinGlobalSdfResolution) + ", " +
+                                    std::to_string(kMaxGlobalSdfResolution) + "]");
+    }
+    settings.sdf.globalResolution = voxels;
+    settings.lighting.trace.originOffsetVoxels = float(voxels) / float(kPresetGlobalSdfResolution);
+}
+
 GiSceneSettings giScenePreset(const Preset& knobs, const scene::Scene& scene) {
     const float largest = giSceneExtent(scene);
     GiSceneSettings s;
-    s.sdf.globalResolution = 64;
+    setGlobalSdfResolution(s, kPresetGlobalSdfResolution);
 
     s.cache.atlasSize = knobs.atlasSize;
     const double metresPerUnit = scene.units.metresPerUnit > 0.0 ? scene.units.metresPerUnit : 1.0;

@@ -9,20 +9,14 @@
 #include <utility>
 
 namespace lumina::surface_cache {
-namespace {
-
-// Rays start one global-SDF voxel off the surface: the sphere tracer stops within a tenth of a
-// voxel of a surface (its hit threshold), and the origin's own clearance (half a voxel, pushed
-// along the gradient in radiosity.hlsl) keeps it off the walls beside it. Two voxels, as before
-// that clearance existed, showed a floor probe by a wall the room from 26 cm up in two_rooms and
-// brightened it by 4.5 % (docs/gi.md, energy, 16.).
-constexpr float kOriginOffsetVoxels = 1.0f;
-
-} // namespace
-
+// By default rays start one global-SDF voxel off the surface at the presets' 64 voxels: the sphere
+// tracer stops within a tenth of a voxel of a surface (its hit threshold), and the origin's own
+// clearance (half a voxel, pushed along the gradient in radiosity.hlsl) keeps it off the walls
+// beside it. Two voxels, as before that clearance existed, showed a floor probe by a wall the room
+// from 26 cm up in two_rooms and brightened it by 4.5 % (docs/gi.md, energy, 16.).
 float radiosityOriginOffset(const RadiosityTraceSettings& settings, const sdf::SceneSdf& sdf) {
     return settings.originOffset > 0.0f ? settings.originOffset
-                                        : kOriginOffsetVoxels * sdf.sceneInfo().globalVoxelSize;
+                                        : settings.originOffsetVoxels * sdf.sceneInfo().globalVoxelSize;
 }
 
 RadiosityPass::RadiosityPass(rhi::IDevice& device, uint32_t atlasSize, const sdf::SceneSdf& sdf,
@@ -32,12 +26,15 @@ RadiosityPass::RadiosityPass(rhi::IDevice& device, uint32_t atlasSize, const sdf
         throw std::invalid_argument("radiosity: atlas size " + std::to_string(atlasSize) +
                                     " is not a positive multiple of 64");
     }
-    if (!(settings.originOffset >= 0.0f) || !(settings.maxDistance >= 0.0f) ||
+    if (!(settings.originOffset >= 0.0f) || !(settings.originOffsetVoxels > 0.0f) ||
+        !(settings.maxDistance >= 0.0f) ||
         !(settings.filterMinCosine >= -1.0f && settings.filterMinCosine <= 1.0f)) {
-        throw std::invalid_argument("radiosity: origin offset " + std::to_string(settings.originOffset) +
-                                    ", max distance " + std::to_string(settings.maxDistance) +
-                                    " and filter cosine " + std::to_string(settings.filterMinCosine) +
-                                    ": offsets and distances must be >= 0, the cosine within [-1, 1]");
+        throw std::invalid_argument(
+            "radiosity: origin offset " + std::to_string(settings.originOffset) + " (" +
+            std::to_string(settings.originOffsetVoxels) + " voxels)" + ", max distance " +
+            std::to_string(settings.maxDistance) + " and filter cosine " +
+            std::to_string(settings.filterMinCosine) +
+            ": offsets and distances must be >= 0 (voxels > 0), the cosine within [-1, 1]");
     }
     const gpu::SdfSceneInfo info = sdf.sceneInfo();
     originOffset_ = radiosityOriginOffset(settings, sdf);

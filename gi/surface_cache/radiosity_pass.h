@@ -13,14 +13,19 @@
 namespace lumina::surface_cache {
 
 struct RadiosityTraceSettings {
-    float originOffset = 0.0f; // rays start this far along the texel normal (world); 0: one global SDF voxel
-    float maxDistance = 0.0f;  // world; 0: the global SDF grid's diagonal
+    float originOffset = 0.0f; // rays start this far along the texel normal (world); 0: originOffsetVoxels
+    // With originOffset 0: the lift in global-SDF voxels (finest cascade). The lift must clear the
+    // open surfaces' shells, half a global voxel plus 0.6 of a mesh voxel thick, whose mesh part a
+    // finer global SDF does not thin: GiSceneSettings keeps it at one voxel of a 64-voxel global
+    // SDF (setGlobalSdfResolution, docs/gi.md energy 48.).
+    float originOffsetVoxels = 1.0f;
+    float maxDistance = 0.0f;     // world; 0: the global SDF grid's diagonal
     float filterMinCosine = 0.9f; // neighbours whose normals differ more are not filtered in
 };
 
-// Where probe rays start, off the surface along its normal (world units): the setting, or one
-// global-SDF voxel. Whether a texel is buried does not depend on it (atlasTexelBuried looks two
-// voxels ahead, surface_cache_texel.hlsli).
+// Where probe rays start, off the surface along its normal (world units): the setting, or
+// originOffsetVoxels global-SDF voxels. Whether a texel is buried does not depend on it (atlasTexelBuried
+// looks two voxels ahead, surface_cache_texel.hlsli).
 float radiosityOriginOffset(const RadiosityTraceSettings& settings, const sdf::SceneSdf& sdf);
 
 class RadiosityPass {
