@@ -2,10 +2,12 @@
 // indirect term of the real-time techniques.
 #include "gi/bench/reference_cache.h"
 #include "gi/bench/technique_runs.h"
+#include "gi/frame/gi_technique.h"
 #include "gi/frame/indirect_term.h"
 #include "gi/scene/scene_loader.h"
 
 #include <gtest/gtest.h>
+#include <stdexcept>
 
 namespace lumina::gi {
 namespace {
@@ -103,6 +105,26 @@ TEST(Presets, GetDearerFromLowToHigh) {
         EXPECT_LT(cheaper.shGridFaceSize, dearer.shGridFaceSize) << names[i];
         EXPECT_LT(cheaper.shGridProbesPerFrame, dearer.shGridProbesPerFrame) << names[i];
     }
+}
+
+TEST(Presets, FinerGlobalSdfKeepsTheRadiosityLiftsWorldSize) {
+    // The radiosity's rays start one voxel of the presets' 64-voxel global SDF off their texel,
+    // whatever the resolution (docs/gi.md energy 48.): a lift of a finer grid's own voxel started
+    // them inside the open surfaces' shells.
+    const scene::Scene scene = scene::loadScene("sunlit_rooms");
+    GiSceneSettings settings = giScenePreset(findPreset("medium"), scene);
+    EXPECT_EQ(settings.sdf.globalResolution, kPresetGlobalSdfResolution);
+    EXPECT_EQ(settings.lighting.trace.originOffsetVoxels, 1.0f);
+    setGlobalSdfResolution(settings, 128);
+    EXPECT_EQ(settings.sdf.globalResolution, 128u);
+    EXPECT_EQ(settings.lighting.trace.originOffsetVoxels, 2.0f);
+    EXPECT_THROW(setGlobalSdfResolution(settings, 8), std::invalid_argument);
+
+    const float extent = giSceneExtent(scene);
+    setMeshSdfResolution(settings, 128, scene);
+    EXPECT_EQ(settings.sdf.mesh.resolution, 128u);
+    EXPECT_FLOAT_EQ(settings.cache.minPaddingUnits, extent / 128.0f); // a mesh voxel of the whole scene
+    EXPECT_THROW(setMeshSdfResolution(settings, 1000, scene), std::invalid_argument);
 }
 
 TEST(ReferenceCache, RgbOfNamesAMissingChannel) {
