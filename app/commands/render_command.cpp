@@ -600,7 +600,9 @@ Command renderCommand() {
              {"global-sdf-resolution", "N",
               "lumen and ddgi: voxels along the scene's longest axis in the global SDF, or per side of each "
               "cascade where the scene has cascades (16..256; default 64): finer lets the surface cache's "
-              "rays through narrower openings; memory grows as N^3"},
+              "rays through narrower openings; memory grows as N^3, and a large scene whose finer fitted "
+              "grid is detailed enough gets that one grid instead of cascades (`lumina sdf SCENE "
+              "--global-resolution N` shows which)"},
              {"exr", "PATH", "also write the linear HDR result as EXR"},
              {"dump-buffers", "DIR", "write every intermediate buffer into DIR"},
              {"check-finite", "",
