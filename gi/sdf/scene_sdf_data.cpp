@@ -321,9 +321,13 @@ SceneSdfData buildSceneSdfData(const scene::Scene& scene, const SceneSdfSettings
         const float fittedVoxel = globalGridFor(sceneBox, settings.globalResolution, settings.globalPadding,
                                                 settings.globalMaxDistanceVoxels)
                                       .voxelSize;
-        data.finestVoxelWanted = data.medianInstanceSize / settings.globalFinestVoxelsPerInstance;
+        // Voxels of a kCascadeRuleResolution grid: exactly the fitted ones at that resolution.
+        const float ruleScale = float(settings.globalResolution) / float(kCascadeRuleResolution);
+        data.finestVoxelWanted =
+            data.medianInstanceSize / (settings.globalFinestVoxelsPerInstance * ruleScale);
         if (!(data.medianInstanceSize > 0.0f) ||
-            !(fittedVoxel * settings.globalCascadeBelowVoxelsPerInstance > data.medianInstanceSize)) {
+            !(fittedVoxel * ruleScale * settings.globalCascadeBelowVoxelsPerInstance >
+              data.medianInstanceSize)) {
             maxCascades = 1; // fine enough (or no instance at all): the scene-fitted grid
         }
     }

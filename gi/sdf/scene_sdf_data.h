@@ -21,6 +21,9 @@ namespace lumina::sdf {
 
 inline constexpr uint32_t kNoVolume = 0xFFFFFFFFu;
 
+// The global resolution the cascade rules below are stated at.
+inline constexpr uint32_t kCascadeRuleResolution = 64;
+
 struct SceneSdfSettings {
     SdfSettings mesh; // per-mesh build: 64 voxels along the longest axis by default
     SdfTexelFormat atlasFormat = SdfTexelFormat::R16F;
@@ -35,7 +38,11 @@ struct SceneSdfSettings {
     // halving the voxel size from the fitted one towards median / globalFinestVoxelsPerInstance,
     // at most globalCascades (<= LUMINA_SDF_MAX_CASCADES) of globalResolution^3 voxels.
     // globalFinestVoxelSize > 0 (world units) replaces both rules: cascades whenever the
-    // fitted voxel is coarser than it, towards it.
+    // fitted voxel is coarser than it, towards it. Both rules count voxels of a
+    // kCascadeRuleResolution-voxel grid (the scene-fitted voxel times globalResolution /
+    // kCascadeRuleResolution): a finer resolution refines the cascades (the finest voxel wanted
+    // shrinks with it) rather than trading them for one finer scene-fitted grid, which in the city
+    // at 128 was coarser near the camera than 64's finest cascade (docs/gi.md energy 48.).
     uint32_t globalCascades = 4;
     float globalCascadeBelowVoxelsPerInstance = 2.0f;
     float globalFinestVoxelsPerInstance = 16.0f;

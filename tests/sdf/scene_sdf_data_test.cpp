@@ -123,6 +123,26 @@ TEST_F(SceneSdfDataTest, ScenesOfFewVoxelsPerInstanceGetCascades) {
     EXPECT_THROW(buildSceneSdfData(test::makeTestScene(), fine), std::invalid_argument);
 }
 
+TEST_F(SceneSdfDataTest, AFinerResolutionRefinesTheCascades) {
+    // The cascade rules count voxels of a kCascadeRuleResolution grid (docs/gi.md energy 48.): a
+    // finer resolution keeps the cascades and shrinks their finest voxel, where counting its own
+    // finer voxels had given the city one scene-fitted grid, coarser by the camera than the
+    // cascades it replaced.
+    scene::Scene scene = test::makeTestScene();
+    for (uint32_t i = 0; i < scene.instances.size(); ++i) {
+        scene.instances[i].transform[3].x += 300.0f * float(i);
+    }
+    SceneSdfSettings s = settings();
+    s.globalResolution = kCascadeRuleResolution;
+    const SceneSdfData base = buildSceneSdfData(scene, s);
+    s.globalResolution = 2 * kCascadeRuleResolution;
+    const SceneSdfData finer = buildSceneSdfData(scene, s);
+    ASSERT_GT(base.cascades.count, 1u);
+    EXPECT_GT(finer.cascades.count, 1u);
+    EXPECT_FLOAT_EQ(finer.finestVoxelWanted, 0.5f * base.finestVoxelWanted);
+    EXPECT_LT(finer.cascades.finestVoxelSize, base.cascades.finestVoxelSize);
+}
+
 TEST_F(SceneSdfDataTest, IdenticalMeshesShareOneVolume) {
     scene::Scene scene = test::makeTestScene();
     scene::Mesh copy = scene.meshes[0];
