@@ -20,13 +20,7 @@ presets=${LUMINA_PRESETS:-"low medium high"}
 size=${LUMINA_SIZE:-256x256}
 spp=${LUMINA_REFERENCE_SPP:-65536}
 
-# relMSE and mean radiance (R, G, B averaged) of TEST over REF's, as "relmse ratio".
-figures() {
-  $lumina compare "$1" "$2" 2>&1 | awk '
-    /^  relMSE/ { r = $2 }
-    /^  mean / { gsub(/[(),]/, " "); ref = ($3 + $4 + $5) / 3; test = ($7 + $8 + $9) / 3 }
-    END { printf "%s %.4f\n", r, test / ref }'
-}
+source scripts/gpu/figures.sh
 
 {
   echo "commit $(cat .devbin/commit 2>/dev/null || echo unknown), $size, reference $spp spp"
